@@ -1,0 +1,58 @@
+# spcontact build.  `make run` runs the default case, `make check` the test suite.
+# PETSc: Debian's petsc-dev through pkg-config, or your own with PETSC_DIR (and PETSC_ARCH).
+.DEFAULT_GOAL := all
+SHELL := /bin/bash
+
+ifneq ($(PETSC_DIR),)
+  export PKG_CONFIG_PATH := $(PETSC_DIR)/$(PETSC_ARCH)/lib/pkgconfig:$(PETSC_DIR)/lib/pkgconfig:$(PKG_CONFIG_PATH)
+endif
+PETSC_CFLAGS = $(shell pkg-config --cflags PETSc 2>/dev/null)
+PETSC_LIBS   = $(shell pkg-config --libs PETSc 2>/dev/null)
+HDF5_CFLAGS  = $(shell pkg-config --cflags hdf5-openmpi 2>/dev/null)
+
+CC       = mpicc
+CFLAGS  ?= -O2 -g
+CFLAGS  += -std=c99 -Wall -Wextra -Wno-unused-parameter -MMD -MP
+CPPFLAGS = -Iinclude $(PETSC_CFLAGS) $(HDF5_CFLAGS)
+LDLIBS   = $(PETSC_LIBS) -lmetis -lm
+
+SRC  := $(wildcard src/*.c src/materials/*.c)
+OBJ  := $(SRC:%.c=build/%.o)
+GEO  := $(wildcard input/*.geo)
+MSH  := $(GEO:input/%.geo=build/mesh/%.msh)
+
+.PHONY: all deps run check clean meshes petsc-found
+all: deps
+	@$(MAKE) --no-print-directory bin/spcontact meshes
+
+deps:
+	@bash scripts/setup-deps.sh
+
+petsc-found:
+	@pkg-config --exists PETSc || { echo "error: PETSc not found by pkg-config (module PETSc). Install Debian's petsc-dev (make deps) or set PETSC_DIR/PETSC_ARCH to your PETSc build." >&2; exit 1; }
+
+bin/spcontact: $(OBJ) | petsc-found
+	@mkdir -p bin
+	$(CC) -o $@ $(OBJ) $(LDLIBS)
+
+build/%.o: %.c | petsc-found
+	@mkdir -p $(dir $@)
+	$(CC) $(CPPFLAGS) $(CFLAGS) -c $< -o $@
+
+meshes: $(MSH)
+build/mesh/%.msh: input/%.geo
+	@mkdir -p build/mesh
+	@dim=$$(grep -q "Physical Volume" $< && echo 3 || echo 2); \
+	  echo "gmsh -$$dim $< -> $@"; gmsh -v 2 -$$dim -format msh22 -o $@ $< >/dev/null
+
+# The main job: the default benchmark case (see README).
+run: all
+	@source scripts/env.sh && bash scripts/run-default.sh
+
+check: all
+	@bash tests/run.sh
+
+clean:
+	rm -rf build bin
+
+-include $(OBJ:.o=.d)

@@ -1,0 +1,70 @@
+/* Pure contact law and rigid-obstacle geometry. No PETSc calls beyond scalar types.
+   Sign convention: gap g < 0 is penetration, pressure p >= 0 is compressive.
+   Shifted penalty energy per unit area: 1/2 eps <-(g + s)>^2, so with the point's area A
+     force on the body      A p n,   p = -eps min(0, g + s)
+     residual contribution  r = A eps min(0, g + s) dg/du,  dg/du = n
+     tangent                K = A eps [ H(-(g+s)) n n^T + min(0, g + s) d2g/du2 ]
+   A point is active when g + s <= 0 (so a point that just touches carries stiffness). */
+#ifndef SP_KERNELS_CONTACT_LAW_H
+#define SP_KERNELS_CONTACT_LAW_H
+#include <kernels/tensor.h>
+
+static inline PetscBool SPContactLawActive(PetscReal g, PetscReal s)
+{
+  return (g + s <= 0.0) ? PETSC_TRUE : PETSC_FALSE;
+}
+
+static inline PetscReal SPContactLawPressure(PetscReal g, PetscReal s, PetscReal eps)
+{
+  return -eps * PetscMin(0.0, g + s);
+}
+
+typedef enum { SP_OBSTACLE_PLANE, SP_OBSTACLE_SPHERE, SP_OBSTACLE_CYLINDER } SPObstacleType;
+
+typedef struct {
+  SPObstacleType type;
+  PetscReal      point[3];  /* plane: a point on it; sphere/cylinder: centre (on the axis) */
+  PetscReal      normal[3]; /* plane: unit normal pointing into the body side; cylinder: unit axis */
+  PetscReal      radius;
+  PetscReal      motion[3]; /* rigid displacement at load factor 1 */
+} SPObstacle;
+
+/* Signed distance g of x to the obstacle moved by load*motion, unit normal n = dg/dx pointing
+   away from the obstacle, and the curvature term Hg = d2g/dx2 (dim x dim, row-major). */
+static inline void SPObstacleGap(const SPObstacle *ob, PetscInt dim, PetscReal load, const PetscReal x[], PetscReal *g, PetscReal n[], PetscReal Hg[])
+{
+  PetscReal d[3] = {0, 0, 0}, r, P[9];
+  for (PetscInt i = 0; i < dim; ++i) d[i] = x[i] - (ob->point[i] + load * ob->motion[i]);
+  for (PetscInt i = 0; i < dim * dim; ++i) Hg[i] = 0.0;
+  if (ob->type == SP_OBSTACLE_PLANE) {
+    *g = SPDot(dim, d, ob->normal);
+    for (PetscInt i = 0; i < dim; ++i) n[i] = ob->normal[i];
+    return;
+  }
+  /* P projects out the cylinder axis (3D only; a 2D cylinder is a circle, like a sphere) */
+  for (PetscInt i = 0; i < dim; ++i)
+    for (PetscInt j = 0; j < dim; ++j) P[i * dim + j] = (i == j) - ((ob->type == SP_OBSTACLE_CYLINDER && dim == 3) ? ob->normal[i] * ob->normal[j] : 0.0);
+  {
+    PetscReal dp[3] = {0, 0, 0};
+    for (PetscInt i = 0; i < dim; ++i)
+      for (PetscInt j = 0; j < dim; ++j) dp[i] += P[i * dim + j] * d[j];
+    r  = SPNorm(dim, dp);
+    *g = r - ob->radius;
+    for (PetscInt i = 0; i < dim; ++i) n[i] = r > 0.0 ? dp[i] / r : (i == dim - 1);
+  }
+  if (r > 0.0)
+    for (PetscInt i = 0; i < dim; ++i)
+      for (PetscInt j = 0; j < dim; ++j) Hg[i * dim + j] = (P[i * dim + j] - n[i] * n[j]) / r;
+}
+
+/* Residual (dim) and tangent (dim x dim) of one contact point of area A. */
+static inline void SPContactLawPoint(PetscInt dim, PetscReal A, PetscReal eps, PetscReal g, PetscReal s, const PetscReal n[], const PetscReal Hg[], PetscReal r[], PetscReal K[])
+{
+  const PetscReal m = PetscMin(0.0, g + s), h = SPContactLawActive(g, s) ? 1.0 : 0.0;
+  for (PetscInt i = 0; i < dim; ++i) {
+    if (r) r[i] = A * eps * m * n[i];
+    if (K)
+      for (PetscInt j = 0; j < dim; ++j) K[i * dim + j] = A * eps * (h * n[i] * n[j] + m * Hg[i * dim + j]);
+  }
+}
+#endif

@@ -1,0 +1,107 @@
+/* spcontact: public API of the modules.  Opaque handles; layouts live in spcontact-impl.h. */
+#ifndef SPCONTACT_H
+#define SPCONTACT_H
+
+#include <petscdmplex.h>
+#include <petscsnes.h>
+#include <petscsf.h>
+#include <petscds.h>
+
+#if PETSC_VERSION_LT(3, 19, 0)
+  #define PETSC_SUCCESS 0 /* spelled out from PETSc 3.19 on */
+#endif
+
+#define SP_MAX_BC        8 /* Neumann/Dirichlet conditions per run (-bc_0_.. -bc_7_) */
+#define SP_MAX_OBSTACLES 8 /* rigid obstacles per run (-contact_obstacle_0_.. ) */
+#define SP_MAX_VALUES    16
+
+typedef struct _n_SPProblem *SPProblem; /* material, FE space, boundary conditions, load factor */
+typedef struct _n_SPContact *SPContact; /* contact points, obstacles, method, shift vector */
+typedef struct _n_SPOutput  *SPOutput;  /* HDF5 + XDMF fields, CSV history */
+typedef struct _n_SPSolver  *SPSolver;  /* SNES with the contact-aware callbacks */
+typedef struct _n_SPApp     *SPApp;     /* owns every module object */
+
+/* Log stages and events: one per module, so -log_view tells where time goes. */
+typedef struct {
+  PetscLogStage mesh, setup, solve, output;
+  PetscLogEvent bulkResidual, bulkJacobian, contactSearch, contactAssembly, shiftUpdate;
+} SPLog;
+PETSC_EXTERN PetscErrorCode SPLogRegister(SPLog *);
+
+/* mesh.c, partition-metis.c */
+PETSC_EXTERN PetscErrorCode SPMeshCreate(MPI_Comm, DM *);
+PETSC_EXTERN PetscErrorCode SPMeshCheckLabel(DM, const char[], PetscInt, const PetscInt[], const char[]);
+PETSC_EXTERN PetscErrorCode SPPartitionerSetMetis(DM);
+PETSC_EXTERN PetscErrorCode SPMeshCreateCompletedLabel(DM, const char[], PetscInt, const PetscInt[], const char[], DMLabel *);
+
+/* problem.c, bc.c, materials/ */
+PETSC_EXTERN PetscErrorCode SPProblemCreate(DM, SPProblem *);
+PETSC_EXTERN PetscErrorCode SPProblemSetFromOptions(SPProblem);
+PETSC_EXTERN PetscErrorCode SPProblemSetUp(SPProblem);
+PETSC_EXTERN PetscErrorCode SPProblemSetLoadFactor(SPProblem, PetscReal);
+PETSC_EXTERN PetscErrorCode SPProblemGetLoadFactor(SPProblem, PetscReal *);
+PETSC_EXTERN PetscErrorCode SPProblemGetYoung(SPProblem, PetscReal *);
+PETSC_EXTERN PetscErrorCode SPProblemGetDegree(SPProblem, PetscInt *);
+PETSC_EXTERN PetscErrorCode SPProblemInsertBoundaryValues(SPProblem, Vec);
+PETSC_EXTERN PetscErrorCode SPProblemComputeError(SPProblem, Vec, PetscBool *, PetscReal *);
+PETSC_EXTERN PetscErrorCode SPProblemDestroy(SPProblem *);
+
+/* contact.c (points, areas), contact-search.c (obstacles), contact-enforce.c (methods),
+   contact-update.c (shift update) */
+typedef enum { SP_METHOD_PENALTY, SP_METHOD_SHIFTED, SP_METHOD_SHIFTED_REGRESSION, SP_METHOD_ALM } SPContactMethod;
+PETSC_EXTERN const char *const SPContactMethods[];
+
+typedef struct {
+  PetscInt  activePoints, activeChanged, augmentations;
+  PetscReal maxPenetration, maxShiftChange, peakPressure, contactRadius;
+  PetscReal force[3];
+} SPContactStats;
+
+PETSC_EXTERN PetscErrorCode SPContactCreate(DM, SPProblem, SPContact *);
+PETSC_EXTERN PetscErrorCode SPContactSetFromOptions(SPContact);
+PETSC_EXTERN PetscErrorCode SPContactSetUp(SPContact);
+PETSC_EXTERN PetscErrorCode SPContactIsActive(SPContact, PetscBool *);
+PETSC_EXTERN PetscErrorCode SPContactGetMethod(SPContact, SPContactMethod *);
+PETSC_EXTERN PetscErrorCode SPContactAddResidual(SPContact, Vec, Vec);
+PETSC_EXTERN PetscErrorCode SPContactAddJacobian(SPContact, Vec, Mat);
+PETSC_EXTERN PetscErrorCode SPContactBeginSolve(SPContact, Vec);
+PETSC_EXTERN PetscErrorCode SPContactNewtonUpdate(SPContact, Vec, PetscBool *);
+PETSC_EXTERN PetscErrorCode SPContactAugment(SPContact, Vec, PetscBool *);
+PETSC_EXTERN PetscErrorCode SPContactConverged(SPContact, PetscBool *);
+PETSC_EXTERN PetscErrorCode SPContactGetStats(SPContact, SPContactStats *);
+PETSC_EXTERN PetscErrorCode SPContactSaveState(SPContact);
+PETSC_EXTERN PetscErrorCode SPContactRestoreState(SPContact);
+PETSC_EXTERN PetscErrorCode SPContactGetFields(SPContact, Vec, Vec, Vec, Vec, Vec);
+PETSC_EXTERN PetscErrorCode SPContactWritePoints(SPContact, Vec, const char[]);
+PETSC_EXTERN PetscErrorCode SPContactView(SPContact, PetscViewer);
+PETSC_EXTERN PetscErrorCode SPContactDestroy(SPContact *);
+
+/* solver.c */
+PETSC_EXTERN PetscErrorCode SPSolverCreate(DM, SPProblem, SPContact, SPLog *, SPSolver *);
+PETSC_EXTERN PetscErrorCode SPSolverSetFromOptions(SPSolver);
+PETSC_EXTERN PetscErrorCode SPSolverSolve(SPSolver, Vec, SNESConvergedReason *);
+PETSC_EXTERN PetscErrorCode SPSolverSetHistory(SPSolver, FILE *, PetscInt);
+PETSC_EXTERN PetscErrorCode SPSolverGetCounts(SPSolver, PetscInt *, PetscInt *);
+PETSC_EXTERN PetscErrorCode SPSolverDestroy(SPSolver *);
+
+/* loading.c */
+PETSC_EXTERN PetscErrorCode SPLoadingRun(SPApp);
+
+/* output.c */
+PETSC_EXTERN PetscErrorCode SPOutputCreate(DM, SPOutput *);
+PETSC_EXTERN PetscErrorCode SPOutputSetFromOptions(SPOutput);
+PETSC_EXTERN PetscErrorCode SPOutputOpen(SPOutput);
+PETSC_EXTERN PetscErrorCode SPOutputWriteStep(SPOutput, PetscInt, PetscReal, Vec, SPContact);
+PETSC_EXTERN PetscErrorCode SPOutputGetHistoryFile(SPOutput, FILE **);
+PETSC_EXTERN PetscErrorCode SPOutputClose(SPOutput, SPContact, PetscBool);
+PETSC_EXTERN PetscErrorCode SPOutputGetPrefix(SPOutput, const char **);
+PETSC_EXTERN PetscErrorCode SPOutputDestroy(SPOutput *);
+
+/* app.c */
+PETSC_EXTERN PetscErrorCode SPAppCreate(MPI_Comm, SPApp *);
+PETSC_EXTERN PetscErrorCode SPAppSetUp(SPApp);
+PETSC_EXTERN PetscErrorCode SPAppRun(SPApp, PetscBool *);
+PETSC_EXTERN PetscErrorCode SPAppSummary(SPApp);
+PETSC_EXTERN PetscErrorCode SPAppDestroy(SPApp *);
+
+#endif

@@ -1,0 +1,151 @@
+/* The application: owns every module object; create, set up, run, summarise, destroy. */
+#include <spcontact-impl.h>
+
+PetscErrorCode SPAppCreate(MPI_Comm comm, SPApp *app)
+{
+  SPApp a;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscNew(&a));
+  a->comm        = comm;
+  a->loadSteps   = 1;
+  a->maxCutbacks = 4;
+  PetscCall(PetscTime(&a->t0));
+  PetscCall(SPLogRegister(&a->log));
+  *app = a;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode LoadingSetFromOptions(SPApp a)
+{
+  PetscFunctionBeginUser;
+  PetscOptionsBegin(a->comm, NULL, "Loading options", "spcontact");
+  PetscCall(PetscOptionsInt("-load_steps", "Number of load steps (load factor k/N scales loads, Dirichlet values, obstacle motion)", "SPAppSetUp", a->loadSteps, &a->loadSteps, NULL));
+  PetscCall(PetscOptionsInt("-load_max_cutbacks", "Times a failing load increment is halved before the run stops", "SPAppSetUp", a->maxCutbacks, &a->maxCutbacks, NULL));
+  PetscOptionsEnd();
+  PetscCheck(a->loadSteps >= 1, a->comm, PETSC_ERR_USER_INPUT, "-load_steps %" PetscInt_FMT ": need at least one load step", a->loadSteps);
+  PetscCheck(a->maxCutbacks >= 0, a->comm, PETSC_ERR_USER_INPUT, "-load_max_cutbacks %" PetscInt_FMT ": must be >= 0", a->maxCutbacks);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode SPAppSetUp(SPApp a)
+{
+  PetscFunctionBeginUser;
+  PetscCall(LoadingSetFromOptions(a));
+  PetscCall(PetscLogStagePush(a->log.mesh));
+  PetscCall(SPMeshCreate(a->comm, &a->dm));
+  PetscCall(PetscLogStagePop());
+  PetscCall(PetscLogStagePush(a->log.setup));
+  PetscCall(SPProblemCreate(a->dm, &a->problem));
+  PetscCall(SPProblemSetFromOptions(a->problem));
+  PetscCall(SPContactCreate(a->dm, a->problem, &a->contact));
+  PetscCall(SPContactSetFromOptions(a->contact));
+  PetscCall(SPOutputCreate(a->dm, &a->output));
+  PetscCall(SPOutputSetFromOptions(a->output));
+  PetscCall(SPProblemSetUp(a->problem));
+  PetscCall(SPContactSetUp(a->contact));
+  PetscCall(SPSolverCreate(a->dm, a->problem, a->contact, &a->log, &a->solver));
+  PetscCall(SPSolverSetFromOptions(a->solver));
+  PetscCall(DMCreateGlobalVector(a->dm, &a->u));
+  PetscCall(PetscObjectSetName((PetscObject)a->u, "displacement"));
+  PetscCall(VecSet(a->u, 0.0));
+  PetscCall(SPOutputOpen(a->output));
+  PetscCall(PetscLogStagePop());
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode SPAppRun(SPApp a, PetscBool *converged)
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogStagePush(a->log.solve));
+  PetscCall(SPLoadingRun(a));
+  PetscCall(PetscLogStagePop());
+  PetscCall(PetscLogStagePush(a->log.output));
+  PetscCall(SPOutputClose(a->output, a->contact, a->converged));
+  PetscCall(PetscLogStagePop());
+  *converged = a->converged;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode MeshSummary(SPApp a, PetscViewer v)
+{
+  PetscInt cStart, cEnd, vStart, vEnd, n[2], N[2], dofs, dim, degree;
+  PetscSF  sf;
+  PetscInt nleaves;
+  const PetscInt *leaves;
+  PetscMPIInt size;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_size(a->comm, &size));
+  PetscCall(DMGetDimension(a->dm, &dim));
+  PetscCall(DMPlexGetHeightStratum(a->dm, 0, &cStart, &cEnd));
+  PetscCall(DMPlexGetDepthStratum(a->dm, 0, &vStart, &vEnd));
+  PetscCall(DMGetPointSF(a->dm, &sf));
+  PetscCall(PetscSFGetGraph(sf, NULL, &nleaves, &leaves, NULL));
+  n[0] = cEnd - cStart;
+  n[1] = vEnd - vStart;
+  for (PetscInt l = 0; l < (nleaves > 0 ? nleaves : 0); ++l) {
+    const PetscInt p = leaves ? leaves[l] : l;
+    if (p >= vStart && p < vEnd) n[1]--; /* count each vertex once, at its owner */
+    if (p >= cStart && p < cEnd) n[0]--;
+  }
+  PetscCallMPI(MPI_Allreduce(n, N, 2, MPIU_INT, MPI_SUM, a->comm));
+  PetscCall(VecGetSize(a->u, &dofs));
+  PetscCall(SPProblemGetDegree(a->problem, &degree));
+  PetscCall(PetscViewerASCIIPrintf(v, "ranks %d\ndim %" PetscInt_FMT "\ncells %" PetscInt_FMT "\nvertices %" PetscInt_FMT "\ndofs %" PetscInt_FMT "\nfe_degree %" PetscInt_FMT "\n", size, dim, N[0], N[1], dofs, degree));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The summary block: one `key value` per line, the same keys every run (contact_* only with contact). */
+PetscErrorCode SPAppSummary(SPApp a)
+{
+  PetscViewer    v = PETSC_VIEWER_STDOUT_(a->comm);
+  PetscInt       newton, linear;
+  PetscReal      umax, err;
+  PetscBool      hasErr, on;
+  PetscLogDouble t1;
+  const char    *prefix;
+
+  PetscFunctionBeginUser;
+  PetscCall(SPSolverGetCounts(a->solver, &newton, &linear));
+  PetscCall(VecNorm(a->u, NORM_INFINITY, &umax));
+  PetscCall(SPProblemComputeError(a->problem, a->u, &hasErr, &err));
+  PetscCall(SPOutputGetPrefix(a->output, &prefix));
+  PetscCall(PetscTime(&t1));
+  PetscCall(PetscViewerASCIIPrintf(v, "=== spcontact summary ===\n"));
+  PetscCall(MeshSummary(a, v));
+  PetscCall(PetscViewerASCIIPrintf(v, "converged %s\nload_steps %" PetscInt_FMT "\ncutbacks %" PetscInt_FMT "\nload_factor %g\n", a->converged ? "yes" : "no", a->stepsDone, a->cutbacks, (double)a->loadReached));
+  PetscCall(PetscViewerASCIIPrintf(v, "newton_iterations %" PetscInt_FMT "\nlinear_iterations %" PetscInt_FMT "\n", newton, linear));
+  PetscCall(PetscViewerASCIIPrintf(v, "displacement_max %.10e\n", (double)umax));
+  PetscCall(PetscViewerASCIIPrintf(v, "l2_error %.10e\n", hasErr ? (double)err : -1.0));
+  PetscCall(SPContactIsActive(a->contact, &on));
+  if (on) {
+    SPContactStats st;
+    PetscCall(SPContactGetStats(a->contact, &st));
+    PetscCall(SPContactView(a->contact, v));
+    PetscCall(PetscViewerASCIIPrintf(v, "contact_augmentations %" PetscInt_FMT "\ncontact_active_points %" PetscInt_FMT "\n", st.augmentations, st.activePoints));
+    PetscCall(PetscViewerASCIIPrintf(v, "contact_max_penetration %.10e\n", (double)st.maxPenetration));
+    PetscCall(PetscViewerASCIIPrintf(v, "contact_force_x %.12e\ncontact_force_y %.12e\ncontact_force_z %.12e\n", (double)st.force[0], (double)st.force[1], (double)st.force[2]));
+    PetscCall(PetscViewerASCIIPrintf(v, "contact_peak_pressure %.12e\ncontact_radius %.10e\n", (double)st.peakPressure, (double)st.contactRadius));
+  }
+  PetscCall(PetscViewerASCIIPrintf(v, "output_prefix %s\n", prefix));
+  PetscCall(PetscViewerASCIIPrintf(v, "wall_time %.3f\n", (double)(t1 - a->t0)));
+  PetscCall(PetscViewerASCIIPrintf(v, "=== end summary ===\n"));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode SPAppDestroy(SPApp *app)
+{
+  SPApp a = *app;
+
+  PetscFunctionBeginUser;
+  if (!a) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(VecDestroy(&a->u));
+  PetscCall(SPSolverDestroy(&a->solver));
+  PetscCall(SPOutputDestroy(&a->output));
+  PetscCall(SPContactDestroy(&a->contact));
+  if (a->problem) PetscCall(SPProblemDestroy(&a->problem));
+  PetscCall(DMDestroy(&a->dm));
+  PetscCall(PetscFree(*app));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}

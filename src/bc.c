@@ -1,0 +1,92 @@
+/* Boundary conditions from indexed options -bc_<i>_*: Dirichlet per component, traction and
+   pressure per label, all scaled by the load factor. */
+#include <spcontact-impl.h>
+#include <kernels/elastic.h>
+
+const char *const SPBCTypes[] = {"dirichlet", "traction", "pressure", "SPBCType", "SP_BC_", NULL};
+
+static PetscErrorCode BCSetFromOptions(MPI_Comm comm, PetscInt i, PetscInt dim, SPBC *bc)
+{
+  char      prefix[32];
+  PetscInt  type = 0, nval = 3;
+  PetscBool set;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscSNPrintf(prefix, sizeof(prefix), "bc_%" PetscInt_FMT "_", i));
+  PetscCall(PetscStrcpy(bc->label, "Face Sets"));
+  bc->nvalues = SP_MAX_VALUES;
+  bc->ncomps  = dim;
+  for (PetscInt d = 0; d < 3; ++d) bc->comps[d] = d, bc->value[d] = 0.0;
+  PetscOptionsBegin(comm, prefix, "Boundary condition", "spcontact");
+  PetscCall(PetscOptionsEList("-type", "Boundary condition type", "SPBCSetFromOptions", SPBCTypes, 3, SPBCTypes[0], &type, NULL));
+  PetscCall(PetscOptionsString("-label", "Mesh label of the boundary", "SPBCSetFromOptions", bc->label, bc->label, sizeof(bc->label), NULL));
+  PetscCall(PetscOptionsIntArray("-values", "Label values (gmsh physical group numbers)", "SPBCSetFromOptions", bc->values, &bc->nvalues, &set));
+  if (!set) bc->nvalues = 0;
+  PetscCall(PetscOptionsIntArray("-components", "Dirichlet: constrained displacement components (0..dim-1)", "SPBCSetFromOptions", bc->comps, &bc->ncomps, &set));
+  if (!set) bc->ncomps = dim;
+  PetscCall(PetscOptionsRealArray("-value", "Dirichlet: one displacement per component; traction: vector; pressure: value (all at load factor 1)", "SPBCSetFromOptions", bc->value, &nval, NULL));
+  PetscOptionsEnd();
+  bc->type = (SPBCType)type;
+  PetscCheck(bc->nvalues > 0, comm, PETSC_ERR_USER_INPUT, "-%svalues: give the label values of boundary condition %" PetscInt_FMT, prefix, i);
+  for (PetscInt k = 0; k < bc->ncomps; ++k)
+    PetscCheck(bc->comps[k] >= 0 && bc->comps[k] < dim, comm, PETSC_ERR_USER_INPUT, "-%scomponents: component %" PetscInt_FMT " out of range [0, %" PetscInt_FMT ")", prefix, bc->comps[k], dim);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode SPBCSetFromOptions(MPI_Comm comm, PetscInt dim, PetscInt *nbc, SPBC bc[])
+{
+  PetscFunctionBeginUser;
+  *nbc = 0;
+  for (PetscInt i = 0; i < SP_MAX_BC; ++i) {
+    char      name[32];
+    PetscBool has;
+    PetscCall(PetscSNPrintf(name, sizeof(name), "-bc_%" PetscInt_FMT "_type", i));
+    PetscCall(PetscOptionsHasName(NULL, NULL, name, &has));
+    if (!has) break;
+    PetscCall(BCSetFromOptions(comm, i, dim, &bc[i]));
+    (*nbc)++;
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* u_c = load * value_k on the constrained components; the load factor arrives as "time". */
+static PetscErrorCode DirichletValue(PetscInt dim, PetscReal load, const PetscReal x[], PetscInt Nc, PetscScalar *u, void *ctx)
+{
+  const SPBC *bc = (const SPBC *)ctx;
+  for (PetscInt c = 0; c < Nc; ++c) u[c] = 0.0;
+  for (PetscInt k = 0; k < bc->ncomps; ++k) u[bc->comps[k]] = load * bc->value[k];
+  return PETSC_SUCCESS;
+}
+
+PetscErrorCode SPBCAddToDS(DM dm, PetscInt nbc, SPBC bc[], PetscScalar constants[])
+{
+  PetscDS  ds;
+  PetscInt slot = 0, one = 1, dim;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMGetDS(dm, &ds));
+  PetscCall(DMGetDimension(dm, &dim));
+  for (PetscInt i = 0; i < nbc; ++i) {
+    char    opt[32];
+    DMLabel label;
+    PetscCall(PetscSNPrintf(opt, sizeof(opt), "-bc_%" PetscInt_FMT "_label", i));
+    PetscCall(SPMeshCheckLabel(dm, bc[i].label, bc[i].nvalues, bc[i].values, opt));
+    if (bc[i].type == SP_BC_DIRICHLET) {
+      char name[64];
+      PetscCall(PetscSNPrintf(name, sizeof(name), "spcontact_bc_%" PetscInt_FMT, i));
+      PetscCall(SPMeshCreateCompletedLabel(dm, bc[i].label, bc[i].nvalues, bc[i].values, name, &label));
+      PetscCall(DMAddBoundary(dm, DM_BC_ESSENTIAL, opt + 1, label, 1, &one, 0, bc[i].ncomps, bc[i].comps, (void (*)(void))DirichletValue, NULL, &bc[i], NULL));
+    } else {
+      PetscWeakForm wf;
+      PetscInt      bd;
+      PetscCall(DMGetLabel(dm, bc[i].label, &label));
+      PetscCall(DMAddBoundary(dm, DM_BC_NATURAL, opt + 1, label, bc[i].nvalues, bc[i].values, 0, 0, NULL, NULL, NULL, NULL, &bd));
+      PetscCall(PetscDSGetBoundary(ds, bd, &wf, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL));
+      for (PetscInt v = 0; v < bc[i].nvalues; ++v) PetscCall(PetscWeakFormSetIndexBdResidual(wf, label, bc[i].values[v], 0, 0, 0, SPNeumannKernels[slot], 0, NULL));
+      constants[SP_C_BC0 + 4 * slot] = bc[i].type == SP_BC_PRESSURE ? bc[i].value[0] : 0.0;
+      for (PetscInt d = 0; d < dim; ++d) constants[SP_C_BC0 + 4 * slot + 1 + d] = bc[i].type == SP_BC_TRACTION ? bc[i].value[d] : 0.0;
+      slot++;
+    }
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}

@@ -1,0 +1,163 @@
+/* Tributary area of each contact point, A_i = sum over slave facets of int N_i dA (exact for
+   segments and triangles, 2x2 Gauss for bilinear quadrilaterals), and the local facet size h_i
+   used by eps = alpha E / h_i.  Facet contributions are summed across ranks through the
+   contact-point layout, so a vertex on a partition boundary gets its full area exactly once. */
+#include <spcontact-impl.h>
+
+/* int N_a dA for the facet with nv vertices x (dim each), returned in w[]; measure in *meas */
+static void FacetWeights(PetscInt dim, PetscInt nv, const PetscReal x[], PetscReal w[], PetscReal *meas)
+{
+  if (nv == 2) { /* segment (2D) */
+    PetscReal d[2] = {x[2] - x[0], x[3] - x[1]};
+    *meas = SPNorm(2, d);
+    w[0] = w[1] = 0.5 * *meas;
+  } else if (nv == 3) { /* triangle (3D) */
+    PetscReal a[3], b[3], n[3];
+    for (PetscInt d = 0; d < 3; ++d) a[d] = x[3 + d] - x[d], b[d] = x[6 + d] - x[d];
+    n[0]  = a[1] * b[2] - a[2] * b[1];
+    n[1]  = a[2] * b[0] - a[0] * b[2];
+    n[2]  = a[0] * b[1] - a[1] * b[0];
+    *meas = 0.5 * SPNorm(3, n);
+    w[0] = w[1] = w[2] = *meas / 3.0;
+  } else { /* bilinear quadrilateral (3D), vertices in cyclic order */
+    const PetscReal xi[4] = {-1, 1, 1, -1}, eta[4] = {-1, -1, 1, 1}, gp = 1.0 / PetscSqrtReal(3.0);
+    *meas = 0.0;
+    for (PetscInt a = 0; a < 4; ++a) w[a] = 0.0;
+    for (PetscInt q = 0; q < 4; ++q) {
+      const PetscReal s = xi[q] * gp, t = eta[q] * gp;
+      PetscReal       ds[3] = {0, 0, 0}, dt[3] = {0, 0, 0}, n[3], J;
+      for (PetscInt a = 0; a < 4; ++a)
+        for (PetscInt d = 0; d < 3; ++d) {
+          ds[d] += 0.25 * xi[a] * (1 + t * eta[a]) * x[a * 3 + d];
+          dt[d] += 0.25 * eta[a] * (1 + s * xi[a]) * x[a * 3 + d];
+        }
+      n[0] = ds[1] * dt[2] - ds[2] * dt[1];
+      n[1] = ds[2] * dt[0] - ds[0] * dt[2];
+      n[2] = ds[0] * dt[1] - ds[1] * dt[0];
+      J    = SPNorm(3, n);
+      *meas += J;
+      for (PetscInt a = 0; a < 4; ++a) w[a] += 0.25 * (1 + s * xi[a]) * (1 + t * eta[a]) * J;
+    }
+  }
+  (void)dim;
+}
+
+/* Vertices (in closure order) and coordinates of facet f */
+static PetscErrorCode FacetVertices(DM dm, PetscInt f, PetscInt *nv, PetscInt vert[], PetscReal x[])
+{
+  PetscInt          *cl = NULL, ncl, vStart, vEnd, dim;
+  Vec                coords;
+  PetscSection       cs;
+  const PetscScalar *ca;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMGetDimension(dm, &dim));
+  PetscCall(DMPlexGetDepthStratum(dm, 0, &vStart, &vEnd));
+  PetscCall(DMGetCoordinatesLocal(dm, &coords));
+  PetscCall(DMGetCoordinateSection(dm, &cs));
+  PetscCall(VecGetArrayRead(coords, &ca));
+  PetscCall(DMPlexGetTransitiveClosure(dm, f, PETSC_TRUE, &ncl, &cl));
+  *nv = 0;
+  for (PetscInt p = 0; p < 2 * ncl; p += 2) {
+    PetscInt off;
+    if (cl[p] < vStart || cl[p] >= vEnd) continue;
+    PetscCheck(*nv < 4, PETSC_COMM_SELF, PETSC_ERR_SUP, "slave facet %" PetscInt_FMT " has more than 4 vertices", f);
+    PetscCall(PetscSectionGetOffset(cs, cl[p], &off));
+    vert[*nv] = cl[p];
+    for (PetscInt d = 0; d < dim; ++d) x[*nv * dim + d] = PetscRealPart(ca[off + d]);
+    (*nv)++;
+  }
+  PetscCall(DMPlexRestoreTransitiveClosure(dm, f, PETSC_TRUE, &ncl, &cl));
+  PetscCall(VecRestoreArrayRead(coords, &ca));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Sum facet contributions into local vectors (area, facet measure, facet count), then to owners */
+static PetscErrorCode AccumulateFacets(SPContact c, Vec area, Vec meas, Vec count)
+{
+  DMLabel      label;
+  PetscSection ls;
+  PetscInt     fStart, fEnd;
+  Vec          la, lm, lc;
+  PetscScalar *pa, *pm, *pc;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMGetLabel(c->dm, c->label, &label));
+  PetscCall(DMGetLocalSection(c->dmC, &ls));
+  PetscCall(DMPlexGetHeightStratum(c->dm, 1, &fStart, &fEnd));
+  PetscCall(DMGetLocalVector(c->dmC, &la));
+  PetscCall(DMGetLocalVector(c->dmC, &lm));
+  PetscCall(DMGetLocalVector(c->dmC, &lc));
+  PetscCall(VecZeroEntries(la));
+  PetscCall(VecZeroEntries(lm));
+  PetscCall(VecZeroEntries(lc));
+  PetscCall(VecGetArray(la, &pa));
+  PetscCall(VecGetArray(lm, &pm));
+  PetscCall(VecGetArray(lc, &pc));
+  for (PetscInt v = 0; v < c->nvalues; ++v) {
+    IS              is;
+    const PetscInt *pts;
+    PetscInt        n = 0;
+    PetscCall(DMLabelGetStratumIS(label, c->values[v], &is));
+    if (!is) continue;
+    PetscCall(ISGetLocalSize(is, &n));
+    PetscCall(ISGetIndices(is, &pts));
+    for (PetscInt k = 0; k < n; ++k) {
+      PetscInt  nv = 0, vert[4], off;
+      PetscReal x[12], w[4], m;
+      if (pts[k] < fStart || pts[k] >= fEnd) continue; /* facets only */
+      PetscCall(FacetVertices(c->dm, pts[k], &nv, vert, x));
+      FacetWeights(c->dim, nv, x, w, &m);
+      for (PetscInt a = 0; a < nv; ++a) {
+        PetscCall(PetscSectionGetOffset(ls, vert[a], &off));
+        pa[off] += w[a];
+        pm[off] += m;
+        pc[off] += 1.0;
+      }
+    }
+    PetscCall(ISRestoreIndices(is, &pts));
+    PetscCall(ISDestroy(&is));
+  }
+  PetscCall(VecRestoreArray(la, &pa));
+  PetscCall(VecRestoreArray(lm, &pm));
+  PetscCall(VecRestoreArray(lc, &pc));
+  PetscCall(VecZeroEntries(area));
+  PetscCall(VecZeroEntries(meas));
+  PetscCall(VecZeroEntries(count));
+  PetscCall(DMLocalToGlobal(c->dmC, la, ADD_VALUES, area));
+  PetscCall(DMLocalToGlobal(c->dmC, lm, ADD_VALUES, meas));
+  PetscCall(DMLocalToGlobal(c->dmC, lc, ADD_VALUES, count));
+  PetscCall(DMRestoreLocalVector(c->dmC, &la));
+  PetscCall(DMRestoreLocalVector(c->dmC, &lm));
+  PetscCall(DMRestoreLocalVector(c->dmC, &lc));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode SPContactComputeAreas(SPContact c)
+{
+  Vec                area, meas, count;
+  const PetscScalar *pa, *pm, *pc;
+  PetscReal          E;
+
+  PetscFunctionBeginUser;
+  PetscCall(SPProblemGetYoung(c->problem, &E));
+  PetscCall(VecDuplicate(c->shift, &area));
+  PetscCall(VecDuplicate(c->shift, &meas));
+  PetscCall(VecDuplicate(c->shift, &count));
+  PetscCall(AccumulateFacets(c, area, meas, count));
+  PetscCall(VecGetArrayRead(area, &pa));
+  PetscCall(VecGetArrayRead(meas, &pm));
+  PetscCall(VecGetArrayRead(count, &pc));
+  for (PetscInt i = 0; i < c->n; ++i) {
+    const PetscReal h = PetscPowReal(PetscRealPart(pm[i] / pc[i]), 1.0 / (c->dim - 1));
+    c->area[i]        = PetscRealPart(pa[i]);
+    c->eps[i]         = c->penalty > 0.0 ? c->penalty : c->alpha * E / h;
+  }
+  PetscCall(VecRestoreArrayRead(area, &pa));
+  PetscCall(VecRestoreArrayRead(meas, &pm));
+  PetscCall(VecRestoreArrayRead(count, &pc));
+  PetscCall(VecDestroy(&area));
+  PetscCall(VecDestroy(&meas));
+  PetscCall(VecDestroy(&count));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}

@@ -1,0 +1,20 @@
+/* Named log stages and events, so -log_view shows where the time goes. */
+#include <spcontact-impl.h>
+
+PetscErrorCode SPLogRegister(SPLog *log)
+{
+  PetscClassId id;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscClassIdRegister("spcontact", &id));
+  PetscCall(PetscLogStageRegister("SP mesh", &log->mesh));
+  PetscCall(PetscLogStageRegister("SP setup", &log->setup));
+  PetscCall(PetscLogStageRegister("SP solve", &log->solve));
+  PetscCall(PetscLogStageRegister("SP output", &log->output));
+  PetscCall(PetscLogEventRegister("SPBulkResidual", id, &log->bulkResidual));
+  PetscCall(PetscLogEventRegister("SPBulkJacobian", id, &log->bulkJacobian));
+  PetscCall(PetscLogEventRegister("SPContactSearch", id, &log->contactSearch));
+  PetscCall(PetscLogEventRegister("SPContactAssem", id, &log->contactAssembly));
+  PetscCall(PetscLogEventRegister("SPShiftUpdate", id, &log->shiftUpdate));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}

@@ -1,0 +1,137 @@
+/* Mesh: read gmsh (or build a PETSc box mesh), partition (METIS by default), distribute. */
+#include <spcontact-impl.h>
+
+/* A gmsh file must exist and start with $MeshFormat; checked on rank 0 before PETSc's reader
+   runs, so a bad file is a clear, collective error instead of a parse failure deep inside. */
+static PetscErrorCode CheckMeshFile(MPI_Comm comm, const char file[])
+{
+  PetscMPIInt rank;
+  int         status = 0; /* 0 ok, 1 missing, 2 not gmsh */
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  if (rank == 0) {
+    FILE *fp = fopen(file, "r");
+    char  line[64] = "";
+    if (!fp) status = 1;
+    else {
+      if (!fgets(line, sizeof(line), fp) || strncmp(line, "$MeshFormat", 11)) status = 2;
+      fclose(fp);
+    }
+  }
+  PetscCallMPI(MPI_Bcast(&status, 1, MPI_INT, 0, comm));
+  PetscCheck(status != 1, comm, PETSC_ERR_USER_INPUT, "-mesh_file %s: cannot open the file (check the path; run `make meshes` to build input/*.geo into build/mesh/)", file);
+  PetscCheck(status != 2, comm, PETSC_ERR_USER_INPUT, "-mesh_file %s: not a gmsh mesh (no $MeshFormat header); give a .msh written by gmsh", file);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode ReadMesh(MPI_Comm comm, const char file[], DM *dm)
+{
+  PetscErrorCode ierr;
+
+  PetscFunctionBeginUser;
+  PetscCall(CheckMeshFile(comm, file));
+  PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
+  ierr = DMPlexCreateFromFile(comm, file, "spcontact", PETSC_TRUE, dm);
+  PetscCall(PetscPopErrorHandler());
+  PetscCheck(!ierr, comm, PETSC_ERR_USER_INPUT, "-mesh_file %s: gmsh reader failed (PETSc error %d); is the file complete?", file, (int)ierr);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode Distribute(DM *dm, const char partitioner[])
+{
+  PetscPartitioner part;
+  DM               dist = NULL;
+  PetscMPIInt      size;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_size(PetscObjectComm((PetscObject)*dm), &size));
+  if (size == 1) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(DMPlexGetPartitioner(*dm, &part));
+  if (!strcmp(partitioner, "metis")) PetscCall(SPPartitionerSetMetis(*dm));
+  else {
+    PetscErrorCode ierr;
+    PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
+    ierr = PetscPartitionerSetType(part, partitioner);
+    PetscCall(PetscPopErrorHandler());
+    PetscCheck(!ierr, PetscObjectComm((PetscObject)*dm), PETSC_ERR_USER_INPUT, "-mesh_partitioner %s: unknown or unavailable partitioner (use metis, ptscotch or simple)", partitioner);
+  }
+  PetscCall(DMPlexDistribute(*dm, 0, NULL, &dist));
+  if (dist) {
+    PetscCall(DMDestroy(dm));
+    *dm = dist;
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode SPMeshCreate(MPI_Comm comm, DM *dm)
+{
+  char file[PETSC_MAX_PATH_LEN] = "", partitioner[64] = "metis";
+
+  PetscFunctionBeginUser;
+  PetscOptionsBegin(comm, NULL, "Mesh options", "spcontact");
+  PetscCall(PetscOptionsString("-mesh_file", "gmsh .msh file; without it a PETSc box mesh is built from -dm_plex_box_* options", "SPMeshCreate", file, file, sizeof(file), NULL));
+  PetscCall(PetscOptionsString("-mesh_partitioner", "Partitioner: metis (METIS 5 k-way, default), ptscotch, simple", "SPMeshCreate", partitioner, partitioner, sizeof(partitioner), NULL));
+  PetscOptionsEnd();
+  if (file[0]) PetscCall(ReadMesh(comm, file, dm));
+  else {
+    PetscCall(DMCreate(comm, dm));
+    PetscCall(DMSetType(*dm, DMPLEX));
+  }
+  /* PETSc's options (box sizes, -dm_refine, ...) act on the serial mesh; we distribute ourselves */
+  PetscCall(DMPlexDistributeSetDefault(*dm, PETSC_FALSE));
+  PetscCall(DMSetFromOptions(*dm));
+  PetscCall(Distribute(dm, partitioner));
+  PetscCall(PetscObjectSetName((PetscObject)*dm, "mesh"));
+  PetscCall(DMViewFromOptions(*dm, NULL, "-dm_view"));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* A label named by the user must exist and hold points for every requested value (globally). */
+PetscErrorCode SPMeshCheckLabel(DM dm, const char name[], PetscInt nv, const PetscInt values[], const char option[])
+{
+  MPI_Comm comm = PetscObjectComm((PetscObject)dm);
+  DMLabel  label;
+  PetscInt has, hasAll;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMGetLabel(dm, name, &label));
+  has = label ? 1 : 0;
+  PetscCallMPI(MPI_Allreduce(&has, &hasAll, 1, MPIU_INT, MPI_MAX, comm));
+  PetscCheck(hasAll, comm, PETSC_ERR_USER_INPUT, "%s: the mesh has no label \"%s\" (gmsh physical groups are \"Face Sets\"/\"Cell Sets\"; box meshes have \"Face Sets\" and \"marker\")", option, name);
+  PetscCheck(nv > 0, comm, PETSC_ERR_USER_INPUT, "%s: no label values given for label \"%s\"", option, name);
+  for (PetscInt i = 0; i < nv; ++i) {
+    PetscInt n = 0, nAll;
+    if (label) PetscCall(DMLabelGetStratumSize(label, values[i], &n));
+    PetscCallMPI(MPI_Allreduce(&n, &nAll, 1, MPIU_INT, MPI_SUM, comm));
+    PetscCheck(nAll > 0, comm, PETSC_ERR_USER_INPUT, "%s: label \"%s\" has no points with value %" PetscInt_FMT " (check the gmsh physical group numbers)", option, name, values[i]);
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* A new label `name` (value 1) marking the given strata of `src` and their closure; completion
+   runs on the distributed mesh and PETSc propagates it across ranks, so every copy of a shared
+   vertex agrees (essential conditions and contact points need that). */
+PetscErrorCode SPMeshCreateCompletedLabel(DM dm, const char src[], PetscInt nv, const PetscInt values[], const char name[], DMLabel *out)
+{
+  DMLabel label;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMCreateLabel(dm, name));
+  PetscCall(DMGetLabel(dm, name, out));
+  PetscCall(DMGetLabel(dm, src, &label));
+  for (PetscInt v = 0; v < nv; ++v) {
+    IS              is;
+    const PetscInt *pts;
+    PetscInt        n = 0;
+    PetscCall(DMLabelGetStratumIS(label, values[v], &is));
+    if (!is) continue;
+    PetscCall(ISGetLocalSize(is, &n));
+    PetscCall(ISGetIndices(is, &pts));
+    for (PetscInt p = 0; p < n; ++p) PetscCall(DMLabelSetValue(*out, pts[p], 1));
+    PetscCall(ISRestoreIndices(is, &pts));
+    PetscCall(ISDestroy(&is));
+  }
+  PetscCall(DMPlexLabelComplete(dm, *out));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}

@@ -1,0 +1,234 @@
+/* Output: one HDF5 file per run (mesh once, then per load step the vertex fields displacement
+   and, with contact, contact_pressure, gap, shift, active), an XDMF file beside it for ParaView,
+   and the CSV Newton history. Files are written as *.part and renamed when the run ends, so an
+   interrupted run never leaves a file that looks complete. */
+#include <spcontact-impl.h>
+#include <petscviewerhdf5.h>
+
+static const char *const ContactFields[] = {"contact_pressure", "gap", "shift", "active"};
+
+PetscErrorCode SPOutputCreate(DM dm, SPOutput *out)
+{
+  SPOutput o;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscNew(&o));
+  o->dm      = dm;
+  o->enabled = PETSC_TRUE;
+  PetscCall(PetscStrcpy(o->dir, "output"));
+  PetscCall(PetscStrcpy(o->name, "spcontact"));
+  *out = o;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode SPOutputSetFromOptions(SPOutput o)
+{
+  PetscFunctionBeginUser;
+  PetscOptionsBegin(PetscObjectComm((PetscObject)o->dm), NULL, "Output options", "spcontact");
+  PetscCall(PetscOptionsString("-output_dir", "Directory for the .h5, .xmf and .csv files (created if missing)", "SPOutputSetFromOptions", o->dir, o->dir, sizeof(o->dir), NULL));
+  PetscCall(PetscOptionsString("-output_name", "Base name of the output files", "SPOutputSetFromOptions", o->name, o->name, sizeof(o->name), NULL));
+  PetscCall(PetscOptionsBool("-output_fields", "Write the HDF5/XDMF fields (the CSV history is always written)", "SPOutputSetFromOptions", o->enabled, &o->enabled, NULL));
+  PetscOptionsEnd();
+  PetscCall(PetscSNPrintf(o->prefix, sizeof(o->prefix), "%s/%s", o->dir, o->name));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* A clone of the mesh with nc dofs on every vertex (one field), for vertex output */
+static PetscErrorCode VertexDM(DM dm, PetscInt nc, DM *dmV)
+{
+  PetscSection s;
+  PetscInt     pStart, pEnd, vStart, vEnd;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMClone(dm, dmV));
+  PetscCall(DMPlexGetChart(dm, &pStart, &pEnd));
+  PetscCall(DMPlexGetDepthStratum(dm, 0, &vStart, &vEnd));
+  PetscCall(PetscSectionCreate(PetscObjectComm((PetscObject)dm), &s));
+  PetscCall(PetscSectionSetNumFields(s, 1));
+  PetscCall(PetscSectionSetFieldComponents(s, 0, nc));
+  PetscCall(PetscSectionSetChart(s, pStart, pEnd));
+  for (PetscInt v = vStart; v < vEnd; ++v) {
+    PetscCall(PetscSectionSetDof(s, v, nc));
+    PetscCall(PetscSectionSetFieldDof(s, v, 0, nc));
+  }
+  PetscCall(PetscSectionSetUp(s));
+  PetscCall(DMSetLocalSection(*dmV, s));
+  PetscCall(PetscSectionDestroy(&s));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode CheckDirectory(SPOutput o)
+{
+  MPI_Comm    comm = PetscObjectComm((PetscObject)o->dm);
+  PetscMPIInt rank;
+  int         ok = 1;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  if (rank == 0) {
+    char  probe[PETSC_MAX_PATH_LEN + 32];
+    FILE *fp;
+    (void)PetscMkdir(o->dir);
+    PetscCall(PetscSNPrintf(probe, sizeof(probe), "%s.probe", o->prefix));
+    fp = fopen(probe, "w");
+    if (!fp) ok = 0;
+    else fclose(fp), remove(probe);
+  }
+  PetscCallMPI(MPI_Bcast(&ok, 1, MPI_INT, 0, comm));
+  PetscCheck(ok, comm, PETSC_ERR_USER_INPUT, "-output_dir %s: cannot create or write the output directory; choose a writable one", o->dir);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode SPOutputOpen(SPOutput o)
+{
+  MPI_Comm comm = PetscObjectComm((PetscObject)o->dm);
+  char     file[PETSC_MAX_PATH_LEN + 16];
+  PetscInt dim;
+
+  PetscFunctionBeginUser;
+  PetscCall(CheckDirectory(o));
+  PetscCall(PetscSNPrintf(file, sizeof(file), "%s.csv.part", o->prefix));
+  PetscCall(PetscFOpen(comm, file, "w", &o->csv));
+  PetscCall(PetscFPrintf(comm, o->csv, "step,augmentation,iteration,residual_norm,active_points,max_penetration,max_shift_change,linear_iterations\n"));
+  if (!o->enabled) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(DMGetDimension(o->dm, &dim));
+  PetscCall(VertexDM(o->dm, dim, &o->dmV));
+  PetscCall(VertexDM(o->dm, 1, &o->dmS));
+  PetscCall(PetscSNPrintf(file, sizeof(file), "%s.h5.part", o->prefix));
+  PetscCall(PetscViewerHDF5Open(comm, file, FILE_MODE_WRITE, &o->h5));
+  PetscCall(PetscViewerPushFormat(o->h5, PETSC_VIEWER_HDF5_XDMF));
+  PetscCall(DMView(o->dm, o->h5));
+  PetscCall(PetscViewerHDF5PushTimestepping(o->h5));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode SPOutputGetHistoryFile(SPOutput o, FILE **fp)
+{
+  PetscFunctionBeginUser;
+  *fp = o->csv;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Vertex values of the displacement (any Lagrange degree: the vertex dofs), with Dirichlet values */
+static PetscErrorCode VertexDisplacement(SPOutput o, PetscReal load, Vec u, Vec uV)
+{
+  DM                 dm = o->dm;
+  PetscSection       ls, gsV;
+  PetscInt           vStart, vEnd, dim, rstart;
+  Vec                locX;
+  const PetscScalar *x;
+  PetscScalar       *y;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMGetDimension(dm, &dim));
+  PetscCall(DMGetLocalSection(dm, &ls));
+  PetscCall(DMGetGlobalSection(o->dmV, &gsV));
+  PetscCall(DMPlexGetDepthStratum(dm, 0, &vStart, &vEnd));
+  PetscCall(VecGetOwnershipRange(uV, &rstart, NULL));
+  PetscCall(DMGetLocalVector(dm, &locX));
+  PetscCall(VecZeroEntries(locX));
+  PetscCall(DMGlobalToLocal(dm, u, INSERT_VALUES, locX));
+  PetscCall(DMPlexInsertBoundaryValues(dm, PETSC_TRUE, locX, load, NULL, NULL, NULL));
+  PetscCall(VecGetArrayRead(locX, &x));
+  PetscCall(VecGetArray(uV, &y));
+  for (PetscInt v = vStart; v < vEnd; ++v) {
+    PetscInt goff, off;
+    PetscCall(PetscSectionGetOffset(gsV, v, &goff));
+    if (goff < 0) continue;
+    PetscCall(PetscSectionGetOffset(ls, v, &off));
+    for (PetscInt d = 0; d < dim; ++d) y[goff - rstart + d] = x[off + d];
+  }
+  PetscCall(VecRestoreArray(uV, &y));
+  PetscCall(VecRestoreArrayRead(locX, &x));
+  PetscCall(DMRestoreLocalVector(dm, &locX));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode SPOutputWriteStep(SPOutput o, PetscInt step, PetscReal load, Vec u, SPContact contact)
+{
+  Vec       uV, f[4];
+  PetscBool on;
+
+  PetscFunctionBeginUser;
+  if (!o->enabled) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCheck(o->nsteps < (PetscInt)(sizeof(o->times) / sizeof(o->times[0])), PETSC_COMM_SELF, PETSC_ERR_SUP, "too many output steps");
+  PetscCall(PetscViewerHDF5SetTimestep(o->h5, o->nsteps));
+  o->times[o->nsteps++] = load;
+  PetscCall(DMGetGlobalVector(o->dmV, &uV));
+  PetscCall(PetscObjectSetName((PetscObject)uV, "displacement"));
+  PetscCall(VertexDisplacement(o, load, u, uV));
+  PetscCall(VecView(uV, o->h5));
+  PetscCall(DMRestoreGlobalVector(o->dmV, &uV));
+  PetscCall(SPContactIsActive(contact, &on));
+  if (!on) PetscFunctionReturn(PETSC_SUCCESS);
+  o->contactFields = PETSC_TRUE;
+  for (PetscInt k = 0; k < 4; ++k) {
+    PetscCall(DMGetGlobalVector(o->dmS, &f[k]));
+    PetscCall(PetscObjectSetName((PetscObject)f[k], ContactFields[k]));
+  }
+  PetscCall(SPContactGetFields(contact, u, f[0], f[1], f[2], f[3]));
+  for (PetscInt k = 0; k < 4; ++k) {
+    PetscCall(VecView(f[k], o->h5));
+    PetscCall(DMRestoreGlobalVector(o->dmS, &f[k]));
+  }
+  (void)step;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode SPOutputGetPrefix(SPOutput o, const char **prefix)
+{
+  PetscFunctionBeginUser;
+  *prefix = o->prefix;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode SPOutputDestroy(SPOutput *out)
+{
+  SPOutput o = *out;
+
+  PetscFunctionBeginUser;
+  if (!o) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(PetscViewerDestroy(&o->h5));
+  PetscCall(DMDestroy(&o->dmV));
+  PetscCall(DMDestroy(&o->dmS));
+  PetscCall(PetscFree(*out));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode Rename(MPI_Comm comm, const char prefix[], const char ext[])
+{
+  char from[PETSC_MAX_PATH_LEN + 32], to[PETSC_MAX_PATH_LEN + 32];
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscSNPrintf(from, sizeof(from), "%s.%s.part", prefix, ext));
+  PetscCall(PetscSNPrintf(to, sizeof(to), "%s.%s", prefix, ext));
+  PetscCheck(!rename(from, to), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "cannot rename %s to %s", from, to);
+  (void)comm;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Finish the files: rename *.part, write the XDMF, and the contact points CSV of the last state.
+   The files stay complete even when the run stopped early: they hold the converged steps. */
+PetscErrorCode SPOutputClose(SPOutput o, SPContact contact, PetscBool converged)
+{
+  MPI_Comm    comm = PetscObjectComm((PetscObject)o->dm);
+  PetscMPIInt rank;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  PetscCall(PetscFClose(comm, o->csv));
+  o->csv = NULL;
+  if (o->h5) {
+    PetscCall(PetscViewerHDF5PopTimestepping(o->h5));
+    PetscCall(PetscViewerPopFormat(o->h5));
+    PetscCall(PetscViewerDestroy(&o->h5));
+  }
+  if (rank == 0) {
+    PetscCall(Rename(comm, o->prefix, "csv"));
+    if (o->enabled) PetscCall(Rename(comm, o->prefix, "h5"));
+  }
+  if (o->enabled) PetscCall(SPOutputWriteXdmf(o));
+  (void)contact;
+  (void)converged;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}

@@ -1,0 +1,232 @@
+/* Solver: SNES Newton whose FormFunction/FormJacobian wrap PETSc's DMPlex FEM routines and add
+   the contact terms. The shift update hook is a line-search post-check on the accepted iterate
+   (it flags the iterate as changed, so SNES recomputes the residual and its norm for the new
+   shift); a contact-aware test wraps SNESConvergedDefault. */
+#include <spcontact-impl.h>
+
+static PetscErrorCode LocalState(SPSolver s, Vec X, Vec *locX)
+{
+  PetscFunctionBeginUser;
+  PetscCall(DMGetLocalVector(s->dm, locX));
+  PetscCall(VecZeroEntries(*locX));
+  PetscCall(DMGlobalToLocal(s->dm, X, INSERT_VALUES, *locX));
+  PetscCall(SPProblemInsertBoundaryValues(s->problem, *locX));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode FormFunction(SNES snes, Vec X, Vec F, void *ctx)
+{
+  SPSolver  s = (SPSolver)ctx;
+  Vec       locX, locF;
+  PetscBool on;
+
+  PetscFunctionBeginUser;
+  PetscCall(LocalState(s, X, &locX));
+  PetscCall(DMGetLocalVector(s->dm, &locF));
+  PetscCall(VecZeroEntries(locF));
+  PetscCall(PetscLogEventBegin(s->log->bulkResidual, 0, 0, 0, 0));
+  PetscCall(DMPlexSNESComputeResidualFEM(s->dm, locX, locF, NULL));
+  PetscCall(PetscLogEventEnd(s->log->bulkResidual, 0, 0, 0, 0));
+  PetscCall(SPContactIsActive(s->contact, &on));
+  if (on) {
+    PetscCall(PetscLogEventBegin(s->log->contactAssembly, 0, 0, 0, 0));
+    PetscCall(SPContactAddResidual(s->contact, locX, locF));
+    PetscCall(PetscLogEventEnd(s->log->contactAssembly, 0, 0, 0, 0));
+  }
+  PetscCall(VecZeroEntries(F));
+  PetscCall(DMLocalToGlobal(s->dm, locF, ADD_VALUES, F));
+  PetscCall(DMRestoreLocalVector(s->dm, &locF));
+  PetscCall(DMRestoreLocalVector(s->dm, &locX));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode FormJacobian(SNES snes, Vec X, Mat J, Mat P, void *ctx)
+{
+  SPSolver  s = (SPSolver)ctx;
+  Vec       locX;
+  PetscBool on;
+
+  PetscFunctionBeginUser;
+  PetscCall(LocalState(s, X, &locX));
+  PetscCall(MatZeroEntries(P));
+  PetscCall(PetscLogEventBegin(s->log->bulkJacobian, 0, 0, 0, 0));
+  PetscCall(DMPlexSNESComputeJacobianFEM(s->dm, locX, P, P, NULL));
+  PetscCall(PetscLogEventEnd(s->log->bulkJacobian, 0, 0, 0, 0));
+  PetscCall(SPContactIsActive(s->contact, &on));
+  if (on) {
+    PetscCall(PetscLogEventBegin(s->log->contactAssembly, 0, 0, 0, 0));
+    PetscCall(SPContactAddJacobian(s->contact, locX, P));
+    PetscCall(PetscLogEventEnd(s->log->contactAssembly, 0, 0, 0, 0));
+  }
+  if (J != P) {
+    PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
+    PetscCall(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY));
+  }
+  PetscCall(DMRestoreLocalVector(s->dm, &locX));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The Newton-iteration boundary: W is the accepted new iterate. */
+static PetscErrorCode ShiftHook(SNESLineSearch ls, Vec X, Vec Y, Vec W, PetscBool *changedY, PetscBool *changedW, void *ctx)
+{
+  SPSolver s = (SPSolver)ctx;
+
+  PetscFunctionBeginUser;
+  *changedY = PETSC_FALSE;
+  PetscCall(PetscLogEventBegin(s->log->shiftUpdate, 0, 0, 0, 0));
+  PetscCall(SPContactNewtonUpdate(s->contact, W, changedW));
+  PetscCall(PetscLogEventEnd(s->log->shiftUpdate, 0, 0, 0, 0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode LogIteration(SPSolver s, PetscInt it, PetscReal fnorm)
+{
+  SPContactStats st = {0};
+  PetscInt       lits;
+  PetscBool      on;
+
+  PetscFunctionBeginUser;
+  PetscCall(SPContactIsActive(s->contact, &on));
+  if (on) st = s->contact->stats;
+  PetscCall(SNESGetLinearSolveIterations(s->snes, &lits));
+  if (it == 0) s->lastLinear = 0;
+  lits -= s->lastLinear;
+  s->lastLinear += lits;
+  if (on && s->contact->monitor)
+    PetscCall(PetscPrintf(PetscObjectComm((PetscObject)s->dm), "  contact %3" PetscInt_FMT " |F| %.6e active %" PetscInt_FMT " changed %" PetscInt_FMT " max_penetration %.6e max_shift_change %.6e\n", it, (double)fnorm, st.activePoints, st.activeChanged, (double)st.maxPenetration, (double)st.maxShiftChange));
+  if (s->history)
+    PetscCall(PetscFPrintf(PetscObjectComm((PetscObject)s->dm), s->history, "%" PetscInt_FMT ",%" PetscInt_FMT ",%" PetscInt_FMT ",%.10e,%" PetscInt_FMT ",%.10e,%.10e,%" PetscInt_FMT "\n", s->step, st.augmentations, it, (double)fnorm, st.activePoints, (double)st.maxPenetration, (double)st.maxShiftChange, lits));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode Converged(SNES snes, PetscInt it, PetscReal xnorm, PetscReal snorm, PetscReal fnorm, SNESConvergedReason *reason, void *ctx)
+{
+  SPSolver  s = (SPSolver)ctx;
+  PetscBool on, ok;
+
+  PetscFunctionBeginUser;
+  PetscCall(SNESConvergedDefault(snes, it, xnorm, snorm, fnorm, reason, NULL));
+  PetscCall(LogIteration(s, it, fnorm));
+  PetscCall(SPContactIsActive(s->contact, &on));
+  if (on && *reason > 0) {
+    PetscCall(SPContactConverged(s->contact, &ok));
+    if (!ok) *reason = SNES_CONVERGED_ITERATING;
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode SPSolverCreate(DM dm, SPProblem problem, SPContact contact, SPLog *log, SPSolver *solver)
+{
+  SPSolver     s;
+  KSP          ksp;
+  PC           pc;
+  MatNullSpace nsp;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscNew(&s));
+  s->dm      = dm;
+  s->problem = problem;
+  s->contact = contact;
+  s->log     = log;
+  PetscCall(DMCreateGlobalVector(dm, &s->r));
+  PetscCall(DMCreateMatrix(dm, &s->J));
+  PetscCall(DMPlexCreateRigidBody(dm, 0, &nsp)); /* on the dof layout: constrained dofs excluded */
+  PetscCall(MatSetNearNullSpace(s->J, nsp));
+  PetscCall(MatNullSpaceDestroy(&nsp));
+  PetscCall(SNESCreate(PetscObjectComm((PetscObject)dm), &s->snes));
+  PetscCall(SNESSetDM(s->snes, dm));
+  PetscCall(SNESSetFunction(s->snes, s->r, FormFunction, s));
+  PetscCall(SNESSetJacobian(s->snes, s->J, s->J, FormJacobian, s));
+  PetscCall(SNESSetConvergenceTest(s->snes, Converged, s, NULL));
+  PetscCall(SNESSetTolerances(s->snes, 1e-12, 1e-9, PETSC_DEFAULT, 50, PETSC_DEFAULT));
+  PetscCall(SNESGetKSP(s->snes, &ksp));
+  PetscCall(KSPSetType(ksp, KSPCG));
+  PetscCall(KSPSetNormType(ksp, KSP_NORM_UNPRECONDITIONED));
+  PetscCall(KSPSetTolerances(ksp, 1e-10, 1e-30, PETSC_DEFAULT, 2000));
+  PetscCall(KSPGetPC(ksp, &pc));
+  PetscCall(PCSetType(pc, PCGAMG));
+  *solver = s;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode SPSolverSetFromOptions(SPSolver s)
+{
+  SNESLineSearch ls;
+  PetscBool      on;
+
+  PetscFunctionBeginUser;
+  PetscCall(SNESSetFromOptions(s->snes));
+  PetscCall(SPContactIsActive(s->contact, &on));
+  if (on) {
+    PetscCall(SNESGetLineSearch(s->snes, &ls));
+    PetscCall(SNESLineSearchSetPostCheck(ls, ShiftHook, s));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode SPSolverSetHistory(SPSolver s, FILE *fp, PetscInt step)
+{
+  PetscFunctionBeginUser;
+  s->history = fp;
+  s->step    = step;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* One Newton solve, wrapped in the augmentation loop for alm. */
+static PetscErrorCode NewtonSolve(SPSolver s, Vec u, SNESConvergedReason *reason)
+{
+  PetscInt  its, lits;
+  PetscBool on;
+
+  PetscFunctionBeginUser;
+  PetscCall(SPContactIsActive(s->contact, &on));
+  if (on) PetscCall(SPContactBeginSolve(s->contact, u));
+  PetscCall(SNESSolve(s->snes, NULL, u));
+  PetscCall(SNESGetConvergedReason(s->snes, reason));
+  PetscCall(SNESGetIterationNumber(s->snes, &its));
+  PetscCall(SNESGetLinearSolveIterations(s->snes, &lits));
+  s->newtonTotal += its;
+  s->linearTotal += lits;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode SPSolverSolve(SPSolver s, Vec u, SNESConvergedReason *reason)
+{
+  PetscBool on;
+
+  PetscFunctionBeginUser;
+  PetscCall(SPContactIsActive(s->contact, &on));
+  PetscCall(NewtonSolve(s, u, reason));
+  if (!on || !s->contact->entry->augments) PetscFunctionReturn(PETSC_SUCCESS);
+  for (PetscInt k = 0; *reason > 0; ++k) {
+    PetscBool done;
+    PetscCall(SPContactAugment(s->contact, u, &done));
+    if (done) break;
+    if (k >= s->contact->almMax) {
+      PetscCall(PetscPrintf(PetscObjectComm((PetscObject)s->dm), "alm: gap tolerance %g not reached after %" PetscInt_FMT " augmentations (max penetration %g); raise -contact_alm_max\n", (double)s->contact->gapTol, k, (double)s->contact->stats.maxPenetration));
+      *reason = SNES_DIVERGED_MAX_IT;
+      break;
+    }
+    PetscCall(NewtonSolve(s, u, reason));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode SPSolverGetCounts(SPSolver s, PetscInt *newton, PetscInt *linear)
+{
+  PetscFunctionBeginUser;
+  if (newton) *newton = s->newtonTotal;
+  if (linear) *linear = s->linearTotal;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode SPSolverDestroy(SPSolver *solver)
+{
+  PetscFunctionBeginUser;
+  if (!*solver) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(SNESDestroy(&(*solver)->snes));
+  PetscCall(MatDestroy(&(*solver)->J));
+  PetscCall(VecDestroy(&(*solver)->r));
+  PetscCall(PetscFree(*solver));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
