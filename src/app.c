@@ -56,11 +56,21 @@ PetscErrorCode SPAppSetUp(SPApp a)
 
 PetscErrorCode SPAppRun(SPApp a, PetscBool *converged)
 {
+  PetscBool on;
+
   PetscFunctionBeginUser;
   PetscCall(PetscLogStagePush(a->log.solve));
   PetscCall(SPLoadingRun(a));
   PetscCall(PetscLogStagePop());
   PetscCall(PetscLogStagePush(a->log.output));
+  PetscCall(SPContactIsActive(a->contact, &on));
+  if (on) {
+    const char *prefix;
+    char        file[PETSC_MAX_PATH_LEN + 16];
+    PetscCall(SPOutputGetPrefix(a->output, &prefix));
+    PetscCall(PetscSNPrintf(file, sizeof(file), "%s_contact.csv", prefix));
+    PetscCall(SPContactWritePoints(a->contact, a->u, file));
+  }
   PetscCall(SPOutputClose(a->output, a->contact, a->converged));
   PetscCall(PetscLogStagePop());
   *converged = a->converged;

@@ -1,8 +1,99 @@
-/* XDMF index of the HDF5 file (written by rank 0 after the HDF5 file is closed). */
+/* XDMF index of the HDF5 file, written by rank 0 after the HDF5 file is complete: a temporal
+   collection of grids sharing /geometry/vertices and /viz/topology/cells, with the vertex fields
+   of each step read as hyperslabs of /vertex_fields/<name>_Field_0 (PETSc's layout). */
 #include <spcontact-impl.h>
+
+static const char *TopologyType(PetscInt dim, PetscInt corners)
+{
+  if (dim == 2) return corners == 3 ? "Triangle" : "Quadrilateral";
+  return corners == 4 ? "Tetrahedron" : "Hexahedron";
+}
+
+static PetscErrorCode MeshCounts(DM dm, PetscInt *nv, PetscInt *nc, PetscInt *corners)
+{
+  MPI_Comm comm = PetscObjectComm((PetscObject)dm);
+  PetscInt cStart, cEnd, vStart, vEnd, k = 0, *cl = NULL, ncl, loc[2], all[2];
+  IS       cellIS, vertIS;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMPlexGetHeightStratum(dm, 0, &cStart, &cEnd));
+  PetscCall(DMPlexGetDepthStratum(dm, 0, &vStart, &vEnd));
+  if (cEnd > cStart) {
+    PetscCall(DMPlexGetTransitiveClosure(dm, cStart, PETSC_TRUE, &ncl, &cl));
+    for (PetscInt p = 0; p < 2 * ncl; p += 2) k += (cl[p] >= vStart && cl[p] < vEnd);
+    PetscCall(DMPlexRestoreTransitiveClosure(dm, cStart, PETSC_TRUE, &ncl, &cl));
+  }
+  PetscCallMPI(MPI_Allreduce(&k, corners, 1, MPIU_INT, MPI_MAX, comm));
+  PetscCall(DMPlexGetCellNumbering(dm, &cellIS));
+  PetscCall(DMPlexGetVertexNumbering(dm, &vertIS));
+  loc[0] = loc[1] = 0;
+  { /* owned entries are >= 0 in the numberings */
+    const PetscInt *idx;
+    PetscInt        n;
+    PetscCall(ISGetLocalSize(cellIS, &n));
+    PetscCall(ISGetIndices(cellIS, &idx));
+    for (PetscInt i = 0; i < n; ++i) loc[0] += idx[i] >= 0;
+    PetscCall(ISRestoreIndices(cellIS, &idx));
+    PetscCall(ISGetLocalSize(vertIS, &n));
+    PetscCall(ISGetIndices(vertIS, &idx));
+    for (PetscInt i = 0; i < n; ++i) loc[1] += idx[i] >= 0;
+    PetscCall(ISRestoreIndices(vertIS, &idx));
+  }
+  PetscCallMPI(MPI_Allreduce(loc, all, 2, MPIU_INT, MPI_SUM, comm));
+  *nc = all[0];
+  *nv = all[1];
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static void Attribute(FILE *fp, const char h5[], const char name[], PetscInt nc, PetscInt step, PetscInt nsteps, PetscInt nv)
+{
+  const char *type = nc == 1 ? "Scalar" : "Vector";
+  if (nc == 1) {
+    fprintf(fp, "        <Attribute Name=\"%s\" AttributeType=\"%s\" Center=\"Node\">\n", name, type);
+    fprintf(fp, "          <DataItem ItemType=\"HyperSlab\" Dimensions=\"1 %d\" Type=\"HyperSlab\">\n", (int)nv);
+    fprintf(fp, "            <DataItem Dimensions=\"3 2\" Format=\"XML\">%d 0 1 1 1 %d</DataItem>\n", (int)step, (int)nv);
+    fprintf(fp, "            <DataItem DataType=\"Float\" Precision=\"8\" Dimensions=\"%d %d\" Format=\"HDF\">%s:/vertex_fields/%s_Field_0</DataItem>\n", (int)nsteps, (int)nv, h5, name);
+  } else {
+    fprintf(fp, "        <Attribute Name=\"%s\" AttributeType=\"%s\" Center=\"Node\">\n", name, type);
+    fprintf(fp, "          <DataItem ItemType=\"HyperSlab\" Dimensions=\"1 %d %d\" Type=\"HyperSlab\">\n", (int)nv, (int)nc);
+    fprintf(fp, "            <DataItem Dimensions=\"3 3\" Format=\"XML\">%d 0 0 1 1 1 1 %d %d</DataItem>\n", (int)step, (int)nv, (int)nc);
+    fprintf(fp, "            <DataItem DataType=\"Float\" Precision=\"8\" Dimensions=\"%d %d %d\" Format=\"HDF\">%s:/vertex_fields/%s_Field_0</DataItem>\n", (int)nsteps, (int)nv, (int)nc, h5, name);
+  }
+  fprintf(fp, "          </DataItem>\n        </Attribute>\n");
+}
 
 PetscErrorCode SPOutputWriteXdmf(SPOutput o)
 {
+  static const char *const cfields[] = {"contact_pressure", "gap", "shift", "active"};
+  MPI_Comm    comm = PetscObjectComm((PetscObject)o->dm);
+  PetscMPIInt rank;
+  PetscInt    nv = 0, nc = 0, corners = 0, dim;
+  char        h5[PETSC_MAX_PATH_LEN + 8], xmf[PETSC_MAX_PATH_LEN + 8];
+  FILE       *fp;
+
   PetscFunctionBeginUser;
+  PetscCall(MeshCounts(o->dm, &nv, &nc, &corners));
+  PetscCall(DMGetDimension(o->dm, &dim));
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  if (rank) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(PetscSNPrintf(h5, sizeof(h5), "%s.h5", o->name)); /* relative: the .xmf sits beside it */
+  PetscCall(PetscSNPrintf(xmf, sizeof(xmf), "%s.xmf", o->prefix));
+  fp = fopen(xmf, "w");
+  PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write %s", xmf);
+  fprintf(fp, "<?xml version=\"1.0\" ?>\n<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n<Xdmf Version=\"2.0\">\n  <Domain>\n");
+  fprintf(fp, "    <Grid Name=\"spcontact\" GridType=\"Collection\" CollectionType=\"Temporal\">\n");
+  for (PetscInt k = 0; k < o->nsteps; ++k) {
+    fprintf(fp, "      <Grid Name=\"step_%d\" GridType=\"Uniform\">\n        <Time Value=\"%.10g\"/>\n", (int)k, (double)o->times[k]);
+    fprintf(fp, "        <Topology TopologyType=\"%s\" NumberOfElements=\"%d\">\n", TopologyType(dim, corners), (int)nc);
+    fprintf(fp, "          <DataItem Format=\"HDF\" DataType=\"Int\" Dimensions=\"%d %d\">%s:/viz/topology/cells</DataItem>\n        </Topology>\n", (int)nc, (int)corners, h5);
+    fprintf(fp, "        <Geometry GeometryType=\"%s\">\n", dim == 2 ? "XY" : "XYZ");
+    fprintf(fp, "          <DataItem Format=\"HDF\" DataType=\"Float\" Precision=\"8\" Dimensions=\"%d %d\">%s:/geometry/vertices</DataItem>\n        </Geometry>\n", (int)nv, (int)dim, h5);
+    Attribute(fp, h5, "displacement", dim, k, o->nsteps, nv);
+    if (o->contactFields)
+      for (PetscInt f = 0; f < 4; ++f) Attribute(fp, h5, cfields[f], 1, k, o->nsteps, nv);
+    fprintf(fp, "      </Grid>\n");
+  }
+  fprintf(fp, "    </Grid>\n  </Domain>\n</Xdmf>\n");
+  fclose(fp);
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -115,6 +115,19 @@ static PetscErrorCode Converged(SNES snes, PetscInt it, PetscReal xnorm, PetscRe
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* A PETSc option default for an object configured inside PETSc (GAMG's level smoothers): set only
+   when the user did not. With the default safety factor 1.1 the Chebyshev smoother's eigenvalue
+   estimate is too low on contact Jacobians and CG stops with DIVERGED_INDEFINITE_PC. */
+static PetscErrorCode SetDefaultOption(const char name[], const char value[])
+{
+  PetscBool set;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsHasName(NULL, NULL, name, &set));
+  if (!set) PetscCall(PetscOptionsSetValue(NULL, name, value));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode SPSolverCreate(DM dm, SPProblem problem, SPContact contact, SPLog *log, SPSolver *solver)
 {
   SPSolver     s;
@@ -145,6 +158,7 @@ PetscErrorCode SPSolverCreate(DM dm, SPProblem problem, SPContact contact, SPLog
   PetscCall(KSPSetTolerances(ksp, 1e-10, 1e-30, PETSC_DEFAULT, 2000));
   PetscCall(KSPGetPC(ksp, &pc));
   PetscCall(PCSetType(pc, PCGAMG));
+  PetscCall(SetDefaultOption("-mg_levels_ksp_chebyshev_esteig", "0,0.05,0,1.5"));
   *solver = s;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -155,6 +169,10 @@ PetscErrorCode SPSolverSetFromOptions(SPSolver s)
   PetscBool      on;
 
   PetscFunctionBeginUser;
+  /* Full Newton steps: the penalty residual is piecewise linear (semismooth Newton); backtracking
+     on |F| crawls there, adding one active point per iteration. */
+  PetscCall(SNESGetLineSearch(s->snes, &ls));
+  PetscCall(SNESLineSearchSetType(ls, SNESLINESEARCHBASIC));
   PetscCall(SNESSetFromOptions(s->snes));
   PetscCall(SPContactIsActive(s->contact, &on));
   if (on) {
