@@ -5,7 +5,7 @@
 #include <spcontact.h>
 #include <kernels/contact-law.h>
 
-typedef enum { SP_BC_DIRICHLET, SP_BC_TRACTION, SP_BC_PRESSURE } SPBCType;
+typedef enum { SP_BC_DIRICHLET, SP_BC_TRACTION, SP_BC_PRESSURE, SP_BC_FORCE } SPBCType;
 PETSC_EXTERN const char *const SPBCTypes[];
 
 typedef struct {
@@ -13,7 +13,8 @@ typedef struct {
   char      label[PETSC_MAX_PATH_LEN];
   PetscInt  nvalues, values[SP_MAX_VALUES];
   PetscInt  ncomps, comps[3];
-  PetscReal value[3]; /* Dirichlet: displacement per component; traction: vector; pressure: value[0] */
+  PetscReal value[3]; /* Dirichlet: displacement per component; traction: vector; pressure: value[0];
+                         force: total force vector, applied as the uniform traction force/area */
   PetscReal load;     /* Dirichlet only: the load factor the bc function scales by (set on insert) */
 } SPBC;
 
@@ -21,6 +22,7 @@ typedef PetscErrorCode (*SPMaterialSetUpFn)(PetscDS, PetscReal, PetscReal, Petsc
 typedef struct {
   const char       *name;
   SPMaterialSetUpFn setup;
+  PetscBool         linear; /* stress linear in the strain */
 } SPMaterialEntry;
 PETSC_EXTERN PetscErrorCode SPMaterialSetUp_LinearElastic(PetscDS, PetscReal, PetscReal, PetscScalar[]);
 
@@ -33,6 +35,9 @@ struct _n_SPProblem {
   PetscInt  nbc;
   SPBC      bc[SP_MAX_BC];
   PetscReal mmsAmp; /* manufactured-solution amplitude; 0 = off */
+  PetscBool linear; /* residual affine in u: stiffness reuse is exact */
+  Vec       locBC;  /* local vector holding the Dirichlet values of load factor bcLoad */
+  PetscReal bcLoad;
 };
 
 /* bc.c */
@@ -61,14 +66,16 @@ struct _n_SPContact {
   PetscInt             nvalues, values[SP_MAX_VALUES];
   PetscInt             nob;
   SPObstacle           ob[SP_MAX_OBSTACLES];
-  PetscReal            penalty, alpha, gapTol;
+  PetscReal            penalty, alpha, gapTol, stepCap;
+  PetscBool            safeguard;
   PetscInt             regM, almMax;
   PetscBool            monitor;
   PetscInt             dim;
   /* owned contact points, in the order of the global contact vector */
   PetscInt   n;
   PetscInt  *vertex;
-  PetscReal *area, *eps, *coord;  /* coord: reference position, dim per point */
+  PetscReal *area, *eps, *h, *coord; /* coord: reference position, dim per point; h: facet size */
+  PetscReal *gapStart;             /* gaps at the start of the Newton step (step control) */
   PetscReal *gap, *normal;        /* at the last evaluated state */
   PetscBool *active, *activePrev; /* activePrev: active set of the solve that produced the iterate */
   PetscInt  *inactiveCount;
@@ -83,7 +90,6 @@ struct _n_SPContact {
 PETSC_EXTERN PetscErrorCode SPContactEvaluate(SPContact, Vec);
 PETSC_EXTERN PetscErrorCode SPContactComputeStats(SPContact, const PetscScalar *);
 PETSC_EXTERN PetscErrorCode SPContactComputeAreas(SPContact);
-PETSC_EXTERN PetscErrorCode SPContactGetLocalDisplacement(SPContact, Vec, Vec *);
 PETSC_EXTERN PetscErrorCode SPContactPointDofs(SPContact, PetscInt, PetscInt[]);
 PETSC_EXTERN PetscErrorCode SPContactPointLaw(SPContact, PetscInt, const PetscScalar[], PetscReal, PetscReal[], PetscReal[]);
 PETSC_EXTERN PetscErrorCode SPContactRecoverPressure(SPContact, const PetscScalar *);
@@ -100,7 +106,10 @@ struct _n_SPSolver {
   FILE               *history; /* CSV rows, rank 0 only; may be NULL */
   PetscInt            step;
   PetscInt            newtonTotal, linearTotal, lastLinear;
-  PetscBool           shiftChanged;
+  PetscBool           reuse;  /* linear material: K assembled once, r(u) = r0(load) + K u */
+  Mat                 K;
+  Vec                 r0;
+  PetscReal           r0Load;
 };
 
 struct _n_SPOutput {

@@ -3,7 +3,7 @@
 #include <spcontact-impl.h>
 #include <kernels/elastic.h>
 
-const char *const SPBCTypes[] = {"dirichlet", "traction", "pressure", "SPBCType", "SP_BC_", NULL};
+const char *const SPBCTypes[] = {"dirichlet", "traction", "pressure", "force", "SPBCType", "SP_BC_", NULL};
 
 static PetscErrorCode BCSetFromOptions(MPI_Comm comm, PetscInt i, PetscInt dim, SPBC *bc)
 {
@@ -18,13 +18,13 @@ static PetscErrorCode BCSetFromOptions(MPI_Comm comm, PetscInt i, PetscInt dim, 
   bc->ncomps  = dim;
   for (PetscInt d = 0; d < 3; ++d) bc->comps[d] = d, bc->value[d] = 0.0;
   PetscOptionsBegin(comm, prefix, "Boundary condition", "spcontact");
-  PetscCall(PetscOptionsEList("-type", "Boundary condition type", "SPBCSetFromOptions", SPBCTypes, 3, SPBCTypes[0], &type, NULL));
+  PetscCall(PetscOptionsEList("-type", "Boundary condition type: dirichlet, traction, pressure, force (total force spread uniformly over the faces)", "SPBCSetFromOptions", SPBCTypes, 4, SPBCTypes[0], &type, NULL));
   PetscCall(PetscOptionsString("-label", "Mesh label of the boundary", "SPBCSetFromOptions", bc->label, bc->label, sizeof(bc->label), NULL));
   PetscCall(PetscOptionsIntArray("-values", "Label values (gmsh physical group numbers)", "SPBCSetFromOptions", bc->values, &bc->nvalues, &set));
   if (!set) bc->nvalues = 0;
   PetscCall(PetscOptionsIntArray("-components", "Dirichlet: constrained displacement components (0..dim-1)", "SPBCSetFromOptions", bc->comps, &bc->ncomps, &set));
   if (!set) bc->ncomps = dim;
-  PetscCall(PetscOptionsRealArray("-value", "Dirichlet: one displacement per component; traction: vector; pressure: value (all at load factor 1)", "SPBCSetFromOptions", bc->value, &nval, NULL));
+  PetscCall(PetscOptionsRealArray("-value", "Dirichlet: one displacement per component; traction: vector; pressure: value; force: total force vector (all at load factor 1)", "SPBCSetFromOptions", bc->value, &nval, NULL));
   PetscOptionsEnd();
   bc->type = (SPBCType)type;
   PetscCheck(bc->nvalues > 0, comm, PETSC_ERR_USER_INPUT, "-%svalues: give the label values of boundary condition %" PetscInt_FMT, prefix, i);
@@ -46,6 +46,37 @@ PetscErrorCode SPBCSetFromOptions(MPI_Comm comm, PetscInt dim, PetscInt *nbc, SP
     PetscCall(BCSetFromOptions(comm, i, dim, &bc[i]));
     (*nbc)++;
   }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Measure (area in 3D, length in 2D) of the labelled facets; each boundary facet lives on one rank */
+static PetscErrorCode LabelMeasure(DM dm, const SPBC *bc, PetscReal *measure)
+{
+  DMLabel   label;
+  PetscReal local = 0.0;
+  PetscInt  fStart, fEnd;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMGetLabel(dm, bc->label, &label));
+  PetscCall(DMPlexGetHeightStratum(dm, 1, &fStart, &fEnd));
+  for (PetscInt v = 0; v < bc->nvalues; ++v) {
+    IS              is;
+    const PetscInt *pts;
+    PetscInt        n = 0;
+    PetscCall(DMLabelGetStratumIS(label, bc->values[v], &is));
+    if (!is) continue;
+    PetscCall(ISGetLocalSize(is, &n));
+    PetscCall(ISGetIndices(is, &pts));
+    for (PetscInt k = 0; k < n; ++k) {
+      PetscReal vol;
+      if (pts[k] < fStart || pts[k] >= fEnd) continue;
+      PetscCall(DMPlexComputeCellGeometryFVM(dm, pts[k], &vol, NULL, NULL));
+      local += vol;
+    }
+    PetscCall(ISRestoreIndices(is, &pts));
+    PetscCall(ISDestroy(&is));
+  }
+  PetscCallMPI(MPI_Allreduce(&local, measure, 1, MPIU_REAL, MPI_SUM, PetscObjectComm((PetscObject)dm)));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -83,8 +114,13 @@ PetscErrorCode SPBCAddToDS(DM dm, PetscInt nbc, SPBC bc[], PetscScalar constants
       PetscCall(DMAddBoundary(dm, DM_BC_NATURAL, opt + 1, label, bc[i].nvalues, bc[i].values, 0, 0, NULL, NULL, NULL, NULL, &bd));
       PetscCall(PetscDSGetBoundary(ds, bd, &wf, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL));
       for (PetscInt v = 0; v < bc[i].nvalues; ++v) PetscCall(PetscWeakFormSetIndexBdResidual(wf, label, bc[i].values[v], 0, 0, 0, SPNeumannKernels[slot], 0, NULL));
+      PetscReal scale = 1.0;
+      if (bc[i].type == SP_BC_FORCE) {
+        PetscCall(LabelMeasure(dm, &bc[i], &scale));
+        scale = 1.0 / scale;
+      }
       constants[SP_C_BC0 + 4 * slot] = bc[i].type == SP_BC_PRESSURE ? bc[i].value[0] : 0.0;
-      for (PetscInt d = 0; d < dim; ++d) constants[SP_C_BC0 + 4 * slot + 1 + d] = bc[i].type == SP_BC_TRACTION ? bc[i].value[d] : 0.0;
+      for (PetscInt d = 0; d < dim; ++d) constants[SP_C_BC0 + 4 * slot + 1 + d] = bc[i].type != SP_BC_PRESSURE ? scale * bc[i].value[d] : 0.0;
       slot++;
     }
   }

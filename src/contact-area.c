@@ -151,6 +151,7 @@ PetscErrorCode SPContactComputeAreas(SPContact c)
   for (PetscInt i = 0; i < c->n; ++i) {
     const PetscReal h = PetscPowReal(PetscRealPart(pm[i] / pc[i]), 1.0 / (c->dim - 1));
     c->area[i]        = PetscRealPart(pa[i]);
+    c->h[i]           = h;
     c->eps[i]         = c->penalty > 0.0 ? c->penalty : c->alpha * E / h;
   }
   PetscCall(VecRestoreArrayRead(area, &pa));

@@ -41,9 +41,9 @@ static PetscErrorCode EvaluateGlobal(SPContact c, Vec X)
   Vec locX;
 
   PetscFunctionBeginUser;
-  PetscCall(SPContactGetLocalDisplacement(c, X, &locX));
+  PetscCall(SPProblemGetLocalState(c->problem, X, &locX));
   PetscCall(SPContactEvaluate(c, locX));
-  PetscCall(DMRestoreLocalVector(c->dm, &locX));
+  PetscCall(SPProblemRestoreLocalState(c->problem, &locX));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -78,7 +78,7 @@ static void PushHistory(SPContact c, PetscInt i, PetscReal s, PetscReal g)
 static PetscReal UpdatePoint(SPContact c, PetscInt i, PetscReal s)
 {
   const PetscBool activeNow = SPContactLawActive(c->gap[i], s);
-  if (c->activePrev[i] && activeNow) { /* active in the solve that produced the iterate, and now */
+  if ((c->activePrev[i] || !c->safeguard) && activeNow) { /* active in the solve that produced the iterate, and now */
     c->inactiveCount[i] = 0;
     PushHistory(c, i, s, c->gap[i]);
     return PetscMin(0.0, c->entry->shift(c->nhist[i], &c->histS[i * c->regM], &c->histG[i * c->regM]));
@@ -109,6 +109,32 @@ PetscErrorCode SPContactNewtonUpdate(SPContact c, Vec W, PetscBool *changed)
   PetscCall(VecRestoreArray(c->shift, &s));
   PetscCallMPI(MPI_Allreduce(&maxDs, &all, 1, MPIU_REAL, MPI_MAX, PetscObjectComm((PetscObject)c->dm)));
   *changed = all > 0.0 ? PETSC_TRUE : PETSC_FALSE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Newton step control on the proposed iterate W = X - Y: scale the step so that no point that is
+   not yet deep gets deeper than stepCap*h in one step (gaps interpolated linearly along the step).
+   It matters when a load-controlled body touches at one point: its first step is otherwise
+   sized by a single penalty spring. Inactive once penetrations are small. */
+PetscErrorCode SPContactLimitStep(SPContact c, Vec X, Vec Y, Vec W, PetscBool *changed)
+{
+  PetscReal theta = 1.0, all;
+
+  PetscFunctionBeginUser;
+  *changed = PETSC_FALSE;
+  if (c->stepCap <= 0.0) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(EvaluateGlobal(c, X));
+  for (PetscInt i = 0; i < c->n; ++i) c->gapStart[i] = c->gap[i];
+  PetscCall(EvaluateGlobal(c, W));
+  for (PetscInt i = 0; i < c->n; ++i) {
+    const PetscReal cap = c->stepCap * c->h[i];
+    if (c->gap[i] < -cap && c->gapStart[i] > -cap) theta = PetscMin(theta, (c->gapStart[i] + cap) / (c->gapStart[i] - c->gap[i]));
+  }
+  PetscCallMPI(MPI_Allreduce(&theta, &all, 1, MPIU_REAL, MPI_MIN, PetscObjectComm((PetscObject)c->dm)));
+  if (all < 1.0) {
+    PetscCall(VecWAXPY(W, -all, Y, X));
+    *changed = PETSC_TRUE;
+  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -18,6 +18,8 @@ PetscErrorCode SPContactCreate(DM dm, SPProblem problem, SPContact *contact)
   c->gapTol  = 1e-10;
   c->regM    = 4;
   c->almMax  = 30;
+  c->stepCap = 1.0;
+  c->safeguard = PETSC_TRUE;
   c->nvalues = SP_MAX_VALUES;
   PetscCall(PetscStrcpy(c->label, "Face Sets"));
   PetscCall(DMGetDimension(dm, &c->dim));
@@ -71,6 +73,8 @@ PetscErrorCode SPContactSetFromOptions(SPContact c)
   PetscCall(PetscOptionsReal("-contact_gap_tol", "Shifted/alm methods: converged only when max penetration <= gap_tol", "SPContactSetFromOptions", c->gapTol, &c->gapTol, NULL));
   PetscCall(PetscOptionsInt("-contact_regression_m", "shifted_regression: number of (shift, gap) pairs in the fit (>= 3)", "SPContactSetFromOptions", c->regM, &c->regM, NULL));
   PetscCall(PetscOptionsInt("-contact_alm_max", "alm: maximum number of augmentations", "SPContactSetFromOptions", c->almMax, &c->almMax, NULL));
+  PetscCall(PetscOptionsReal("-contact_step_cap", "Newton step control: scale a step so no point penetrates deeper than step_cap x h in one step (0: off)", "SPContactSetFromOptions", c->stepCap, &c->stepCap, NULL));
+  PetscCall(PetscOptionsBool("-contact_safeguard", "Update the shift only of points active in both the previous and the new iterate (method.md 4.1); false only to demonstrate chatter", "SPContactSetFromOptions", c->safeguard, &c->safeguard, NULL));
   PetscCall(PetscOptionsBool("-contact_monitor", "Print one line per Newton iteration: residual, active points, max penetration, max shift change", "SPContactSetFromOptions", c->monitor, &c->monitor, NULL));
   PetscOptionsEnd();
   if (!setValues) c->nvalues = 0;
@@ -80,6 +84,7 @@ PetscErrorCode SPContactSetFromOptions(SPContact c)
   PetscCheck(c->alpha > 0.0, comm, PETSC_ERR_USER_INPUT, "-contact_alpha %g: the penalty factor must be positive", (double)c->alpha);
   PetscCheck(c->gapTol > 0.0, comm, PETSC_ERR_USER_INPUT, "-contact_gap_tol %g: must be positive", (double)c->gapTol);
   PetscCheck(c->regM >= 3, comm, PETSC_ERR_USER_INPUT, "-contact_regression_m %" PetscInt_FMT ": the fit needs at least 3 pairs", c->regM);
+  PetscCheck(c->stepCap >= 0.0, comm, PETSC_ERR_USER_INPUT, "-contact_step_cap %g: must be >= 0 (0 disables the step control)", (double)c->stepCap);
   PetscCheck(c->almMax >= 1, comm, PETSC_ERR_USER_INPUT, "-contact_alm_max %" PetscInt_FMT ": need at least 1 augmentation", c->almMax);
   for (c->nob = 0; c->nob < SP_MAX_OBSTACLES; ++c->nob) {
     char      name[48];
@@ -150,6 +155,7 @@ static PetscErrorCode CollectPoints(SPContact c)
   PetscCall(VecGetLocalSize(c->shift, &c->n));
   PetscCall(VecGetOwnershipRange(c->shift, &rstart, NULL));
   PetscCall(PetscCalloc5(c->n, &c->vertex, c->n, &c->area, c->n, &c->eps, c->n * c->dim, &c->coord, c->n, &c->gap));
+  PetscCall(PetscCalloc2(c->n, &c->h, c->n, &c->gapStart));
   PetscCall(PetscCalloc5(c->n * c->dim, &c->normal, c->n, &c->active, c->n, &c->activePrev, c->n, &c->inactiveCount, c->n, &c->nhist));
   PetscCall(PetscCalloc2(c->n * c->regM, &c->histS, c->n * c->regM, &c->histG));
   PetscCall(DMGetCoordinatesLocal(c->dm, &coords));
@@ -189,17 +195,6 @@ PetscErrorCode SPContactSetUp(SPContact c)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Local displacement with Dirichlet values at the current load factor (caller restores it) */
-PetscErrorCode SPContactGetLocalDisplacement(SPContact c, Vec X, Vec *locX)
-{
-  PetscFunctionBeginUser;
-  PetscCall(DMGetLocalVector(c->dm, locX));
-  PetscCall(VecZeroEntries(*locX));
-  PetscCall(DMGlobalToLocal(c->dm, X, INSERT_VALUES, *locX));
-  PetscCall(SPProblemInsertBoundaryValues(c->problem, *locX));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 /* Vertex fields for output: pressure, gap, shift, active on the vertex DM of `pressure` */
 PetscErrorCode SPContactGetFields(SPContact c, Vec X, Vec pressure, Vec gap, Vec shift, Vec active)
 {
@@ -211,9 +206,9 @@ PetscErrorCode SPContactGetFields(SPContact c, Vec X, Vec pressure, Vec gap, Vec
   Vec                locX;
 
   PetscFunctionBeginUser;
-  PetscCall(SPContactGetLocalDisplacement(c, X, &locX));
+  PetscCall(SPProblemGetLocalState(c->problem, X, &locX));
   PetscCall(SPContactEvaluate(c, locX));
-  PetscCall(DMRestoreLocalVector(c->dm, &locX));
+  PetscCall(SPProblemRestoreLocalState(c->problem, &locX));
   PetscCall(VecGetDM(pressure, &dmS));
   PetscCall(DMGetGlobalSection(dmS, &gs));
   PetscCall(VecGetOwnershipRange(pressure, &rstart, NULL));
@@ -256,9 +251,9 @@ PetscErrorCode SPContactWritePoints(SPContact c, Vec X, const char file[])
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_size(comm, &size));
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
-  PetscCall(SPContactGetLocalDisplacement(c, X, &locX));
+  PetscCall(SPProblemGetLocalState(c->problem, X, &locX));
   PetscCall(SPContactEvaluate(c, locX));
-  PetscCall(DMRestoreLocalVector(c->dm, &locX));
+  PetscCall(SPProblemRestoreLocalState(c->problem, &locX));
   PetscCall(PetscCalloc1(c->n * nc + 1, &row));
   PetscCall(VecGetArrayRead(c->shift, &s));
   for (PetscInt i = 0; i < c->n; ++i) {
@@ -330,6 +325,7 @@ PetscErrorCode SPContactDestroy(SPContact *contact)
     PetscCall(PetscFree5(c->vertex, c->area, c->eps, c->coord, c->gap));
     PetscCall(PetscFree5(c->normal, c->active, c->activePrev, c->inactiveCount, c->nhist));
     PetscCall(PetscFree2(c->histS, c->histG));
+    PetscCall(PetscFree2(c->h, c->gapStart));
   }
   PetscCall(PetscFree(*contact));
   PetscFunctionReturn(PETSC_SUCCESS);

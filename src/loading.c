@@ -52,7 +52,7 @@ PetscErrorCode SPLoadingRun(SPApp app)
     done = load;
     step++;
     cuts = 0;
-    PetscCall(SPOutputWriteStep(app->output, step, load, app->u, app->contact));
+    PetscCall(SPOutputWriteStep(app->output, app->problem, app->u, app->contact));
   }
   app->stepsDone   = step;
   app->loadReached = done;

@@ -110,7 +110,7 @@ PetscErrorCode SPOutputGetHistoryFile(SPOutput o, FILE **fp)
 }
 
 /* Vertex values of the displacement (any Lagrange degree: the vertex dofs), with Dirichlet values */
-static PetscErrorCode VertexDisplacement(SPOutput o, PetscReal load, Vec u, Vec uV)
+static PetscErrorCode VertexDisplacement(SPOutput o, SPProblem problem, Vec u, Vec uV)
 {
   DM                 dm = o->dm;
   PetscSection       ls, gsV;
@@ -125,10 +125,7 @@ static PetscErrorCode VertexDisplacement(SPOutput o, PetscReal load, Vec u, Vec 
   PetscCall(DMGetGlobalSection(o->dmV, &gsV));
   PetscCall(DMPlexGetDepthStratum(dm, 0, &vStart, &vEnd));
   PetscCall(VecGetOwnershipRange(uV, &rstart, NULL));
-  PetscCall(DMGetLocalVector(dm, &locX));
-  PetscCall(VecZeroEntries(locX));
-  PetscCall(DMGlobalToLocal(dm, u, INSERT_VALUES, locX));
-  PetscCall(DMPlexInsertBoundaryValues(dm, PETSC_TRUE, locX, load, NULL, NULL, NULL));
+  PetscCall(SPProblemGetLocalState(problem, u, &locX));
   PetscCall(VecGetArrayRead(locX, &x));
   PetscCall(VecGetArray(uV, &y));
   for (PetscInt v = vStart; v < vEnd; ++v) {
@@ -140,23 +137,25 @@ static PetscErrorCode VertexDisplacement(SPOutput o, PetscReal load, Vec u, Vec 
   }
   PetscCall(VecRestoreArray(uV, &y));
   PetscCall(VecRestoreArrayRead(locX, &x));
-  PetscCall(DMRestoreLocalVector(dm, &locX));
+  PetscCall(SPProblemRestoreLocalState(problem, &locX));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode SPOutputWriteStep(SPOutput o, PetscInt step, PetscReal load, Vec u, SPContact contact)
+PetscErrorCode SPOutputWriteStep(SPOutput o, SPProblem problem, Vec u, SPContact contact)
 {
   Vec       uV, f[4];
   PetscBool on;
+  PetscReal load;
 
   PetscFunctionBeginUser;
   if (!o->enabled) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCheck(o->nsteps < (PetscInt)(sizeof(o->times) / sizeof(o->times[0])), PETSC_COMM_SELF, PETSC_ERR_SUP, "too many output steps");
+  PetscCall(SPProblemGetLoadFactor(problem, &load));
   PetscCall(PetscViewerHDF5SetTimestep(o->h5, o->nsteps));
   o->times[o->nsteps++] = load;
   PetscCall(DMGetGlobalVector(o->dmV, &uV));
   PetscCall(PetscObjectSetName((PetscObject)uV, "displacement"));
-  PetscCall(VertexDisplacement(o, load, u, uV));
+  PetscCall(VertexDisplacement(o, problem, u, uV));
   PetscCall(VecView(uV, o->h5));
   PetscCall(DMRestoreGlobalVector(o->dmV, &uV));
   PetscCall(SPContactIsActive(contact, &on));
@@ -171,7 +170,6 @@ PetscErrorCode SPOutputWriteStep(SPOutput o, PetscInt step, PetscReal load, Vec 
     PetscCall(VecView(f[k], o->h5));
     PetscCall(DMRestoreGlobalVector(o->dmS, &f[k]));
   }
-  (void)step;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

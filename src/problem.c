@@ -4,7 +4,7 @@
 #include <kernels/elastic.h>
 
 static const SPMaterialEntry SPMaterials[] = {
-  {"linear_elastic", SPMaterialSetUp_LinearElastic},
+  {"linear_elastic", SPMaterialSetUp_LinearElastic, PETSC_TRUE},
 };
 
 PetscErrorCode SPProblemCreate(DM dm, SPProblem *problem)
@@ -51,6 +51,7 @@ static PetscErrorCode SetUpMaterial(SPProblem p, PetscDS ds, PetscScalar constan
     PetscCall(PetscStrcmp(p->material, SPMaterials[i].name, &match));
     if (match) {
       PetscCall(SPMaterials[i].setup(ds, p->E, p->nu, constants));
+      p->linear = SPMaterials[i].linear;
       PetscFunctionReturn(PETSC_SUCCESS);
     }
   }
@@ -132,11 +133,37 @@ PetscErrorCode SPProblemGetDegree(SPProblem p, PetscInt *degree)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Dirichlet values at the current load factor into a local vector */
-PetscErrorCode SPProblemInsertBoundaryValues(SPProblem p, Vec locX)
+/* Local state of a global vector: unconstrained dofs from X, Dirichlet values of the current load
+   factor (projected once per load factor and cached; the projection is costly). */
+PetscErrorCode SPProblemGetLocalState(SPProblem p, Vec X, Vec *locX)
 {
   PetscFunctionBeginUser;
-  PetscCall(DMPlexInsertBoundaryValues(p->dm, PETSC_TRUE, locX, p->load, NULL, NULL, NULL));
+  if (!p->locBC) {
+    PetscCall(DMCreateLocalVector(p->dm, &p->locBC));
+    p->bcLoad = PETSC_MAX_REAL;
+  }
+  if (p->bcLoad != p->load) {
+    PetscCall(VecZeroEntries(p->locBC));
+    PetscCall(DMPlexInsertBoundaryValues(p->dm, PETSC_TRUE, p->locBC, p->load, NULL, NULL, NULL));
+    p->bcLoad = p->load;
+  }
+  PetscCall(DMGetLocalVector(p->dm, locX));
+  PetscCall(VecCopy(p->locBC, *locX));
+  PetscCall(DMGlobalToLocal(p->dm, X, INSERT_VALUES, *locX)); /* constrained entries are kept */
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode SPProblemRestoreLocalState(SPProblem p, Vec *locX)
+{
+  PetscFunctionBeginUser;
+  PetscCall(DMRestoreLocalVector(p->dm, locX));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode SPProblemIsLinear(SPProblem p, PetscBool *linear)
+{
+  PetscFunctionBeginUser;
+  *linear = p->linear;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -156,6 +183,7 @@ PetscErrorCode SPProblemComputeError(SPProblem p, Vec u, PetscBool *has, PetscRe
 PetscErrorCode SPProblemDestroy(SPProblem *p)
 {
   PetscFunctionBeginUser;
+  PetscCall(VecDestroy(&(*p)->locBC));
   PetscCall(PetscFree(*p));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -4,13 +4,59 @@
    shift); a contact-aware test wraps SNESConvergedDefault. */
 #include <spcontact-impl.h>
 
-static PetscErrorCode LocalState(SPSolver s, Vec X, Vec *locX)
+/* Bulk residual of the generic PetscFE path, added into the local vector locF */
+static PetscErrorCode BulkResidualFE(SPSolver s, Vec locX, Vec locF)
 {
   PetscFunctionBeginUser;
-  PetscCall(DMGetLocalVector(s->dm, locX));
-  PetscCall(VecZeroEntries(*locX));
-  PetscCall(DMGlobalToLocal(s->dm, X, INSERT_VALUES, *locX));
-  PetscCall(SPProblemInsertBoundaryValues(s->problem, *locX));
+  PetscCall(PetscLogEventBegin(s->log->bulkResidual, 0, 0, 0, 0));
+  PetscCall(DMPlexSNESComputeResidualFEM(s->dm, locX, locF, NULL));
+  PetscCall(PetscLogEventEnd(s->log->bulkResidual, 0, 0, 0, 0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode BulkJacobianFE(SPSolver s, Vec locX, Mat P)
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(s->log->bulkJacobian, 0, 0, 0, 0));
+  PetscCall(MatZeroEntries(P));
+  PetscCall(DMPlexSNESComputeJacobianFEM(s->dm, locX, P, P, NULL));
+  PetscCall(PetscLogEventEnd(s->log->bulkJacobian, 0, 0, 0, 0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Linear material: K once; r0 = r(u_free = 0) once per load factor (loads, Dirichlet lifting). */
+static PetscErrorCode LinearParts(SPSolver s)
+{
+  PetscReal load;
+  Vec       zero, locX, locF;
+
+  PetscFunctionBeginUser;
+  PetscCall(SPProblemGetLoadFactor(s->problem, &load));
+  if (!s->K) {
+    PetscCall(DMGetGlobalVector(s->dm, &zero));
+    PetscCall(VecZeroEntries(zero));
+    PetscCall(SPProblemGetLocalState(s->problem, zero, &locX));
+    PetscCall(MatDuplicate(s->J, MAT_DO_NOT_COPY_VALUES, &s->K));
+    PetscCall(BulkJacobianFE(s, locX, s->K));
+    PetscCall(SPProblemRestoreLocalState(s->problem, &locX));
+    PetscCall(DMRestoreGlobalVector(s->dm, &zero));
+    PetscCall(VecDuplicate(s->r, &s->r0));
+    s->r0Load = PETSC_MAX_REAL;
+  }
+  if (s->r0Load != load) {
+    PetscCall(DMGetGlobalVector(s->dm, &zero));
+    PetscCall(VecZeroEntries(zero));
+    PetscCall(SPProblemGetLocalState(s->problem, zero, &locX));
+    PetscCall(DMGetLocalVector(s->dm, &locF));
+    PetscCall(VecZeroEntries(locF));
+    PetscCall(BulkResidualFE(s, locX, locF));
+    PetscCall(VecZeroEntries(s->r0));
+    PetscCall(DMLocalToGlobal(s->dm, locF, ADD_VALUES, s->r0));
+    PetscCall(DMRestoreLocalVector(s->dm, &locF));
+    PetscCall(SPProblemRestoreLocalState(s->problem, &locX));
+    PetscCall(DMRestoreGlobalVector(s->dm, &zero));
+    s->r0Load = load;
+  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -21,13 +67,11 @@ static PetscErrorCode FormFunction(SNES snes, Vec X, Vec F, void *ctx)
   PetscBool on;
 
   PetscFunctionBeginUser;
-  PetscCall(LocalState(s, X, &locX));
+  PetscCall(SPContactIsActive(s->contact, &on));
+  PetscCall(SPProblemGetLocalState(s->problem, X, &locX));
   PetscCall(DMGetLocalVector(s->dm, &locF));
   PetscCall(VecZeroEntries(locF));
-  PetscCall(PetscLogEventBegin(s->log->bulkResidual, 0, 0, 0, 0));
-  PetscCall(DMPlexSNESComputeResidualFEM(s->dm, locX, locF, NULL));
-  PetscCall(PetscLogEventEnd(s->log->bulkResidual, 0, 0, 0, 0));
-  PetscCall(SPContactIsActive(s->contact, &on));
+  if (!s->reuse) PetscCall(BulkResidualFE(s, locX, locF));
   if (on) {
     PetscCall(PetscLogEventBegin(s->log->contactAssembly, 0, 0, 0, 0));
     PetscCall(SPContactAddResidual(s->contact, locX, locF));
@@ -35,8 +79,15 @@ static PetscErrorCode FormFunction(SNES snes, Vec X, Vec F, void *ctx)
   }
   PetscCall(VecZeroEntries(F));
   PetscCall(DMLocalToGlobal(s->dm, locF, ADD_VALUES, F));
+  if (s->reuse) { /* F += r0 + K X */
+    PetscCall(LinearParts(s));
+    PetscCall(PetscLogEventBegin(s->log->bulkResidual, 0, 0, 0, 0));
+    PetscCall(MatMultAdd(s->K, X, F, F));
+    PetscCall(VecAXPY(F, 1.0, s->r0));
+    PetscCall(PetscLogEventEnd(s->log->bulkResidual, 0, 0, 0, 0));
+  }
   PetscCall(DMRestoreLocalVector(s->dm, &locF));
-  PetscCall(DMRestoreLocalVector(s->dm, &locX));
+  PetscCall(SPProblemRestoreLocalState(s->problem, &locX));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -47,11 +98,13 @@ static PetscErrorCode FormJacobian(SNES snes, Vec X, Mat J, Mat P, void *ctx)
   PetscBool on;
 
   PetscFunctionBeginUser;
-  PetscCall(LocalState(s, X, &locX));
-  PetscCall(MatZeroEntries(P));
-  PetscCall(PetscLogEventBegin(s->log->bulkJacobian, 0, 0, 0, 0));
-  PetscCall(DMPlexSNESComputeJacobianFEM(s->dm, locX, P, P, NULL));
-  PetscCall(PetscLogEventEnd(s->log->bulkJacobian, 0, 0, 0, 0));
+  PetscCall(SPProblemGetLocalState(s->problem, X, &locX));
+  if (s->reuse) {
+    PetscCall(LinearParts(s));
+    PetscCall(PetscLogEventBegin(s->log->bulkJacobian, 0, 0, 0, 0));
+    PetscCall(MatCopy(s->K, P, SAME_NONZERO_PATTERN));
+    PetscCall(PetscLogEventEnd(s->log->bulkJacobian, 0, 0, 0, 0));
+  } else PetscCall(BulkJacobianFE(s, locX, P));
   PetscCall(SPContactIsActive(s->contact, &on));
   if (on) {
     PetscCall(PetscLogEventBegin(s->log->contactAssembly, 0, 0, 0, 0));
@@ -62,19 +115,22 @@ static PetscErrorCode FormJacobian(SNES snes, Vec X, Mat J, Mat P, void *ctx)
     PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
     PetscCall(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY));
   }
-  PetscCall(DMRestoreLocalVector(s->dm, &locX));
+  PetscCall(SPProblemRestoreLocalState(s->problem, &locX));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 /* The Newton-iteration boundary: W is the accepted new iterate. */
 static PetscErrorCode ShiftHook(SNESLineSearch ls, Vec X, Vec Y, Vec W, PetscBool *changedY, PetscBool *changedW, void *ctx)
 {
-  SPSolver s = (SPSolver)ctx;
+  SPSolver  s = (SPSolver)ctx;
+  PetscBool limited, shifted;
 
   PetscFunctionBeginUser;
   *changedY = PETSC_FALSE;
   PetscCall(PetscLogEventBegin(s->log->shiftUpdate, 0, 0, 0, 0));
-  PetscCall(SPContactNewtonUpdate(s->contact, W, changedW));
+  PetscCall(SPContactLimitStep(s->contact, X, Y, W, &limited));
+  PetscCall(SPContactNewtonUpdate(s->contact, W, &shifted));
+  *changedW = limited || shifted ? PETSC_TRUE : PETSC_FALSE;
   PetscCall(PetscLogEventEnd(s->log->shiftUpdate, 0, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -169,6 +225,10 @@ PetscErrorCode SPSolverSetFromOptions(SPSolver s)
   PetscBool      on;
 
   PetscFunctionBeginUser;
+  PetscCall(SPProblemIsLinear(s->problem, &s->reuse));
+  PetscOptionsBegin(PetscObjectComm((PetscObject)s->dm), NULL, "Solver options", "spcontact");
+  PetscCall(PetscOptionsBool("-solver_linear_reuse", "Linear material: assemble the bulk stiffness K once and use r(u) = r0(load) + K u (false: PetscFE residual/Jacobian every time)", "SPSolverSetFromOptions", s->reuse, &s->reuse, NULL));
+  PetscOptionsEnd();
   /* Full Newton steps: the penalty residual is piecewise linear (semismooth Newton); backtracking
      on |F| crawls there, adding one active point per iteration. */
   PetscCall(SNESGetLineSearch(s->snes, &ls));
@@ -244,6 +304,8 @@ PetscErrorCode SPSolverDestroy(SPSolver *solver)
   if (!*solver) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(SNESDestroy(&(*solver)->snes));
   PetscCall(MatDestroy(&(*solver)->J));
+  PetscCall(MatDestroy(&(*solver)->K));
+  PetscCall(VecDestroy(&(*solver)->r0));
   PetscCall(VecDestroy(&(*solver)->r));
   PetscCall(PetscFree(*solver));
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -1,0 +1,52 @@
+# Helpers for spcontact test cases (sourced by tests/run.sh; every case is a bash function test_*).
+# A case returns 0 on pass; it prints its figures; RERUN holds the commands that reproduce it.
+source "$(dirname "${BASH_SOURCE[0]}")/../scripts/env.sh"
+SPC=${SPC:-bin/spcontact}
+TESTOUT=${TESTOUT:-build/tests}
+
+# spc OUT NP ARGS... : run spcontact on NP ranks, stdout+stderr to OUT; returns its exit code
+spc() {
+  local out=$1 np=$2; shift 2
+  local cmd="$MPIEXEC -n $np $SPC $*"
+  RERUN="${RERUN:+$RERUN ; }$cmd"
+  timeout 900 $MPIEXEC -n "$np" $SPC "$@" >"$out" 2>&1
+}
+
+# sval OUT KEY : the value of KEY in the summary block of OUT
+sval() {
+  awk -v k="$2" '/^=== spcontact summary ===/{on=1;next} /^=== end summary ===/{on=0} on && $1==k {print $2}' "$1" | tail -n 1
+}
+
+# assert_close NAME VALUE REF RTOL [ATOL] : |VALUE-REF| <= ATOL + RTOL |REF|
+assert_close() {
+  local name=$1 v=$2 ref=$3 rtol=$4 atol=${5:-0}
+  awk -v n="$name" -v v="$v" -v r="$ref" -v rt="$rtol" -v at="$atol" 'BEGIN{
+    if (v == "") { printf "%s: missing value\n", n; exit 1 }
+    d = v - r; if (d < 0) d = -d; a = r < 0 ? -r : r; tol = at + rt * a;
+    ok = (d <= tol); printf "%s: value %.10g ref %.10g |diff| %.3g tol %.3g %s\n", n, v, r, d, tol, ok ? "ok" : "FAILED"; exit !ok }'
+}
+
+# assert_le NAME VALUE BOUND / assert_ge NAME VALUE BOUND
+assert_le() {
+  awk -v n="$1" -v v="$2" -v b="$3" 'BEGIN{ if (v=="") {print n": missing value"; exit 1}
+    ok = (v + 0 <= b + 0); printf "%s: %.10g <= %.10g %s\n", n, v, b, ok ? "ok" : "FAILED"; exit !ok }'
+}
+assert_ge() {
+  awk -v n="$1" -v v="$2" -v b="$3" 'BEGIN{ if (v=="") {print n": missing value"; exit 1}
+    ok = (v + 0 >= b + 0); printf "%s: %.10g >= %.10g %s\n", n, v, b, ok ? "ok" : "FAILED"; exit !ok }'
+}
+
+# assert_eq NAME VALUE EXPECTED (strings)
+assert_eq() {
+  if [ "$2" = "$3" ]; then echo "$1: $2 ok"; else echo "$1: got '$2' expected '$3' FAILED"; return 1; fi
+}
+
+# same_summary OUT1 OUT2 RTOL KEYS... : figures agree across runs (parallel invariance)
+same_summary() {
+  local a=$1 b=$2 rtol=$3 rc=0; shift 3
+  for k in "$@"; do
+    local va vb; va=$(sval "$a" "$k"); vb=$(sval "$b" "$k")
+    assert_close "$k" "$vb" "$va" "$rtol" 1e-14 || rc=1
+  done
+  return $rc
+}
