@@ -165,8 +165,9 @@ static PetscErrorCode Converged(SNES snes, PetscInt it, PetscReal xnorm, PetscRe
   PetscCall(LogIteration(s, it, fnorm));
   PetscCall(SPContactIsActive(s->contact, &on));
   if (on && *reason > 0) {
+    /* the residual test itself must pass: a short step says nothing once the shift moves */
     PetscCall(SPContactConverged(s->contact, &ok));
-    if (!ok) *reason = SNES_CONVERGED_ITERATING;
+    if (!ok || *reason == SNES_CONVERGED_SNORM_RELATIVE) *reason = SNES_CONVERGED_ITERATING;
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -208,12 +209,18 @@ PetscErrorCode SPSolverCreate(DM dm, SPProblem problem, SPContact contact, SPLog
   PetscCall(SNESSetJacobian(s->snes, s->J, s->J, FormJacobian, s));
   PetscCall(SNESSetConvergenceTest(s->snes, Converged, s, NULL));
   PetscCall(SNESSetTolerances(s->snes, 1e-12, 1e-9, PETSC_DEFAULT, 50, PETSC_DEFAULT));
+  /* a load-controlled body touching at one point legitimately raises |F| at first */
+  PetscCall(SNESSetDivergenceTolerance(s->snes, -1.0));
   PetscCall(SNESGetKSP(s->snes, &ksp));
   PetscCall(KSPSetType(ksp, KSPCG));
   PetscCall(KSPSetNormType(ksp, KSP_NORM_UNPRECONDITIONED));
   PetscCall(KSPSetTolerances(ksp, 1e-10, 1e-30, PETSC_DEFAULT, 2000));
   PetscCall(KSPGetPC(ksp, &pc));
   PetscCall(PCSetType(pc, PCGAMG));
+  /* Unsmoothed aggregation: smoothed prolongators built from contact Jacobians with large penalty
+     entries made CG stop with DIVERGED_INDEFINITE_PC (B2 at alpha >= 100, or on 2 ranks);
+     unsmoothed aggregation costs more CG iterations and never broke down in our runs. */
+  PetscCall(PCGAMGSetNSmooths(pc, 0));
   PetscCall(SetDefaultOption("-mg_levels_ksp_chebyshev_esteig", "0,0.05,0,1.5"));
   *solver = s;
   PetscFunctionReturn(PETSC_SUCCESS);

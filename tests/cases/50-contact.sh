@@ -1,0 +1,181 @@
+# Contact verification: benchmarks B1-B3 of benchmarks.md, the shift contraction, the chatter
+# safeguard, tangent checks, parallel invariance, load stepping and bad contact input.
+
+# max |p - q| / q over all contact points, from the contact-points CSV
+max_pressure_dev() { awk -F, -v q="$2" 'NR>1 { d = ($8 - q) / q; if (d < 0) d = -d; if (d > m) m = d } END { printf "%.3e\n", m }' "$1"; }
+
+b1_case() { # b1_case DIM METHOD: B1 block, figures vs exact
+  local dim=$1 m=$2 out=$CASE_DIR/run.txt
+  spc "$out" 1 -options_file input/block${dim}d.opts -contact_method "$m" -output_dir "$CASE_DIR" || return 1
+  local comp=y eps=80; [ "$dim" = 3 ] && comp=z && eps=60
+  local rc=0
+  assert_eq converged "$(sval "$out" converged)" yes || rc=1
+  assert_close reaction "$(sval "$out" contact_force_$comp)" 0.01 1e-10 || rc=1
+  if [ "$m" = penalty ]; then
+    assert_close penetration_q_over_eps "$(sval "$out" contact_max_penetration)" "$(awk -v e=$eps 'BEGIN{printf "%.15g", 0.01/e}')" 1e-8 || rc=1
+  else
+    assert_le max_penetration "$(sval "$out" contact_max_penetration)" 1e-10 || rc=1
+  fi
+  assert_le pressure_deviation "$(max_pressure_dev "$CASE_DIR/block${dim}d_contact.csv" 0.01)" 1e-8 || rc=1
+  return $rc
+}
+test_contact_b1_2d_penalty()            { b1_case 2 penalty; }
+test_contact_b1_2d_shifted()            { b1_case 2 shifted; }
+test_contact_b1_2d_shifted_regression() { b1_case 2 shifted_regression; }
+test_contact_b1_2d_alm()                { b1_case 2 alm; }
+test_contact_b1_3d_penalty()            { b1_case 3 penalty; }
+test_contact_b1_3d_shifted()            { b1_case 3 shifted; }
+test_contact_b1_3d_alm()                { b1_case 3 alm; }
+
+# B2 Hertz 2D: b = 0.107641, p0 = 0.0591431; h at the contact edge ~ 0.0045 (hertz2d.geo)
+hertz2d_case() { # hertz2d_case METHOD NP [extra options]
+  local m=$1 np=$2; shift 2
+  local out=$CASE_DIR/run.txt rc=0
+  spc "$out" "$np" -options_file input/hertz2d.opts -contact_method "$m" -output_dir "$CASE_DIR" "$@" || return 1
+  assert_eq converged "$(sval "$out" converged)" yes || rc=1
+  assert_close contact_force "$(sval "$out" contact_force_y)" 0.005 1e-8 || rc=1
+  assert_close peak_pressure "$(sval "$out" contact_peak_pressure)" 0.0591431 0.01 || rc=1
+  assert_close half_width "$(sval "$out" contact_radius)" 0.107641 0 0.0054 || rc=1
+  local l2; l2=$($PYTHON scripts/hertz_profile.py "$CASE_DIR/hertz2d_contact.csv" --dim 2) || rc=1
+  echo "$l2"
+  assert_le pressure_l2_error "$(echo "$l2" | awk '/l2_relative_error/{print $2}')" 0.02 || rc=1
+  [ "$m" = penalty ] || assert_le max_penetration "$(sval "$out" contact_max_penetration)" 1e-10 || rc=1
+  return $rc
+}
+test_contact_b2_shifted()            { hertz2d_case shifted 1; }
+test_contact_b2_shifted_regression() { hertz2d_case shifted_regression 1; }
+test_contact_b2_alm()                { hertz2d_case alm 1; }
+test_contact_b2_penalty()            { hertz2d_case penalty 1 -contact_alpha 1000; }
+test_contact_b2_generic_assembly()   { hertz2d_case shifted 1 -solver_linear_reuse false; }
+
+test_contact_b2_parallel_invariance() {
+  local rc=0
+  for np in 1 2 3; do spc "$CASE_DIR/np$np.txt" $np -options_file input/hertz2d.opts -output_dir "$CASE_DIR" -output_name np$np || return 1; done
+  for np in 2 3; do
+    echo "-- 1 rank vs $np ranks"
+    same_summary "$CASE_DIR/np1.txt" "$CASE_DIR/np$np.txt" 1e-8 contact_force_y contact_peak_pressure contact_radius contact_active_points displacement_max contact_points vertices || rc=1
+    assert_le "max_penetration_np$np" "$(sval "$CASE_DIR/np$np.txt" contact_max_penetration)" 1e-10 || rc=1
+  done
+  return $rc
+}
+
+# B3 Hertz 3D: a = 0.110929, p0 = 0.0776038; contact-surface element ~ 0.011-0.015
+test_contact_b3_shifted() {
+  local out=$CASE_DIR/run.txt rc=0
+  spc "$out" 2 -options_file input/hertz3d.opts -output_dir "$CASE_DIR" || return 1
+  assert_eq converged "$(sval "$out" converged)" yes || rc=1
+  assert_close contact_force "$(sval "$out" contact_force_z)" 5e-4 1e-8 || rc=1
+  assert_close peak_pressure "$(sval "$out" contact_peak_pressure)" 0.0776038 0.03 || rc=1
+  assert_close contact_radius "$(sval "$out" contact_radius)" 0.110929 0 0.015 || rc=1
+  assert_le max_penetration "$(sval "$out" contact_max_penetration)" 1e-10 || rc=1
+  return $rc
+}
+
+# The seed's update contracts the penetration by rho = k_c/(k_c + eps) = 1/81 per Newton iteration
+test_contact_shift_contraction() {
+  local out=$CASE_DIR/run.txt rc=0
+  spc "$out" 1 -options_file input/contraction2d.opts -output_dir "$CASE_DIR" || return 1
+  assert_eq converged "$(sval "$out" converged)" yes || rc=1
+  # ratios of successive max penetrations after the first (penalty) iteration, from the CSV history
+  awk -F, 'NR>2 && $6 > 1e-13 { if (p > 0) printf "ratio %.6e\n", $6 / p; p = $6 }' "$CASE_DIR/contraction2d.csv" > "$CASE_DIR/ratios.txt"
+  cat "$CASE_DIR/ratios.txt"
+  [ "$(wc -l < "$CASE_DIR/ratios.txt")" -ge 3 ] || { echo "too few iterations to measure"; rc=1; }
+  while read -r _ r; do
+    assert_ge ratio_vs_rho_lower "$r" "$(awk 'BEGIN{print 0.5/81}')" || rc=1
+    assert_le ratio_vs_rho_upper "$r" "$(awk 'BEGIN{print 2.0/81}')" || rc=1
+  done < "$CASE_DIR/ratios.txt"
+  return $rc
+}
+
+# B1 under load control: the floating mode has k_c = 0, one shift update removes the penetration
+test_contact_b1_one_update() {
+  local out=$CASE_DIR/run.txt
+  spc "$out" 1 -options_file input/block2d.opts -output_dir "$CASE_DIR" || return 1
+  assert_close newton_iterations "$(sval "$out" newton_iterations)" 2 0 0
+}
+
+# Tangent check at a penetrated state, curved obstacles included
+jacobian_case() {
+  local out=$CASE_DIR/run.txt rc=0
+  spc "$out" 1 "$@" -snes_test_jacobian -snes_max_it 3 -contact_step_cap 0 -output_dir "$CASE_DIR" -load_max_cutbacks 0
+  grep '||J - Jfd||_F/||J||_F' "$out" | tail -n +2 > "$CASE_DIR/ratios.txt"
+  cat "$CASE_DIR/ratios.txt"
+  [ -s "$CASE_DIR/ratios.txt" ] || { echo "no Jacobian test at a penetrated state"; return 1; }
+  while read -r line; do
+    assert_le jacobian_ratio "$(echo "$line" | sed 's/.*||J||_F = \([^,]*\),.*/\1/')" 1e-5 || rc=1
+  done < "$CASE_DIR/ratios.txt"
+  return $rc
+}
+indent2d() { echo -dm_plex_dim 2 -dm_plex_simplex 0 -dm_plex_box_faces 6,6 -bc_0_type dirichlet -bc_0_values 1 -contact_values 3 "$@"; }
+test_contact_jacobian_circle_2d() {
+  jacobian_case $(indent2d -contact_obstacle_0_type sphere -contact_obstacle_0_point 0.5,1.6 -contact_obstacle_0_radius 0.65 -contact_method shifted)
+}
+test_contact_jacobian_sphere_3d() {
+  jacobian_case -dm_plex_dim 3 -dm_plex_simplex 0 -dm_plex_box_faces 3,3,3 -bc_0_type dirichlet -bc_0_values 1 -contact_values 2 \
+    -contact_obstacle_0_type sphere -contact_obstacle_0_point 0.5,0.5,1.6 -contact_obstacle_0_radius 0.65 -contact_method penalty
+}
+test_contact_jacobian_cylinder_3d() {
+  jacobian_case -dm_plex_dim 3 -dm_plex_simplex 1 -dm_plex_box_faces 3,3,3 -bc_0_type dirichlet -bc_0_values 1 -contact_values 2 \
+    -contact_obstacle_0_type cylinder -contact_obstacle_0_point 0.5,0.5,1.6 -contact_obstacle_0_normal 1,0.2,0 -contact_obstacle_0_radius 0.65 -contact_method shifted
+}
+
+# Safeguard 1 of method.md: updating the shift of a point that was free makes it chatter.
+test_contact_chatter_safeguard() {
+  local rc=0
+  spc "$CASE_DIR/on.txt" 1 -options_file input/hertz2d.opts -output_dir "$CASE_DIR" -output_name on -snes_max_it 40 -load_max_cutbacks 0
+  assert_eq safeguarded_converged "$(sval "$CASE_DIR/on.txt" converged)" yes || rc=1
+  spc "$CASE_DIR/off.txt" 1 -options_file input/hertz2d.opts -output_dir "$CASE_DIR" -output_name off -contact_safeguard false -snes_max_it 40 -load_max_cutbacks 0
+  echo "without the safeguard: converged $(sval "$CASE_DIR/off.txt" converged), newton_iterations $(sval "$CASE_DIR/off.txt" newton_iterations)"
+  echo "with the safeguard:    newton_iterations $(sval "$CASE_DIR/on.txt" newton_iterations)"
+  return $rc
+}
+
+# Load stepping keeps shifts (warm start) and the figures of a single step
+test_contact_load_steps() {
+  local out=$CASE_DIR/run.txt rc=0
+  spc "$out" 1 -options_file input/hertz2d.opts -output_dir "$CASE_DIR" -load_steps 3 || return 1
+  assert_close load_steps "$(sval "$out" load_steps)" 3 0 0 || rc=1
+  assert_close contact_force "$(sval "$out" contact_force_y)" 0.005 1e-8 || rc=1
+  assert_close peak_pressure "$(sval "$out" contact_peak_pressure)" 0.0591431 0.01 || rc=1
+  $PYTHON scripts/check_xdmf.py "$CASE_DIR/hertz2d.xmf" >/dev/null || { echo "xdmf check failed"; rc=1; }
+  return $rc
+}
+
+# A solve that cannot converge: cut back, then stop with exit code 2 and keep the converged steps
+test_contact_nonconverged_exit() {
+  local out=$CASE_DIR/run.txt code rc=0
+  spc "$out" 1 -options_file input/hertz2d.opts -output_dir "$CASE_DIR" -snes_max_it 2 -load_max_cutbacks 1; code=$?
+  echo "exit code $code"
+  [ $code -eq 2 ] || { echo "expected exit code 2"; rc=1; }
+  assert_eq converged "$(sval "$out" converged)" no || rc=1
+  grep -q "did not converge" "$out" || { echo "no clear message"; rc=1; }
+  ls "$CASE_DIR"/hertz2d.h5 "$CASE_DIR"/hertz2d.xmf "$CASE_DIR"/hertz2d.csv >/dev/null || rc=1
+  return $rc
+}
+
+test_contact_bad_input() {
+  local rc=0 i=0
+  while IFS='|' read -r why args; do
+    [ -z "$why" ] && continue
+    i=$((i + 1))
+    timeout 60 $SPC -options_file input/block2d.opts -output_dir "$CASE_DIR" $args >"$CASE_DIR/o$i.txt" 2>"$CASE_DIR/e$i.txt"; code=$?
+    lines=$(wc -l < "$CASE_DIR/e$i.txt")
+    if [ $code -ne 0 ] && [ $code -lt 128 ] && [ "$lines" -eq 1 ] && grep -q '^spcontact: error:' "$CASE_DIR/e$i.txt"; then
+      echo "ok   $why: $(cat "$CASE_DIR/e$i.txt")"
+    else
+      echo "FAIL $why (exit $code, $lines stderr lines): $(head -3 "$CASE_DIR/e$i.txt")"; rc=1
+    fi
+  done <<'CASES'
+unknown method|-contact_method nosuch
+penalty <= 0|-contact_penalty -5
+alpha <= 0|-contact_alpha 0
+radius <= 0|-contact_obstacle_0_type sphere -contact_obstacle_0_radius -1
+empty slave label value|-contact_values 42
+missing slave label|-contact_label nosuch
+zero normal|-contact_obstacle_0_normal 0,0
+second-order elements|-petscspace_degree 2
+regression m < 3|-contact_regression_m 2
+obstacle without slave values|-contact_values
+CASES
+  return $rc
+}
