@@ -9,7 +9,7 @@ static PetscErrorCode BCSetFromOptions(MPI_Comm comm, PetscInt i, PetscInt dim, 
 {
   char      prefix[32];
   PetscInt  type = 0, nval = 3;
-  PetscBool set;
+  PetscBool set, valueSet;
 
   PetscFunctionBeginUser;
   PetscCall(PetscSNPrintf(prefix, sizeof(prefix), "bc_%" PetscInt_FMT "_", i));
@@ -24,9 +24,13 @@ static PetscErrorCode BCSetFromOptions(MPI_Comm comm, PetscInt i, PetscInt dim, 
   if (!set) bc->nvalues = 0;
   PetscCall(PetscOptionsIntArray("-components", "Dirichlet: constrained displacement components (0..dim-1)", "SPBCSetFromOptions", bc->comps, &bc->ncomps, &set));
   if (!set) bc->ncomps = dim;
-  PetscCall(PetscOptionsRealArray("-value", "Dirichlet: one displacement per component; traction: vector; pressure: value; force: total force vector (all at load factor 1)", "SPBCSetFromOptions", bc->value, &nval, NULL));
+  PetscCall(PetscOptionsRealArray("-value", "Dirichlet: one displacement per component; traction: vector; pressure: value; force: total force vector (all at load factor 1)", "SPBCSetFromOptions", bc->value, &nval, &valueSet));
   PetscOptionsEnd();
   bc->type = (SPBCType)type;
+  {
+    const PetscInt want = bc->type == SP_BC_DIRICHLET ? bc->ncomps : bc->type == SP_BC_PRESSURE ? 1 : dim;
+    PetscCheck(!valueSet || nval == want, comm, PETSC_ERR_USER_INPUT, "-%svalue: %s needs %" PetscInt_FMT " value(s), got %" PetscInt_FMT, prefix, SPBCTypes[type], want, nval);
+  }
   PetscCheck(bc->nvalues > 0, comm, PETSC_ERR_USER_INPUT, "-%svalues: give the label values of boundary condition %" PetscInt_FMT, prefix, i);
   for (PetscInt k = 0; k < bc->ncomps; ++k)
     PetscCheck(bc->comps[k] >= 0 && bc->comps[k] < dim, comm, PETSC_ERR_USER_INPUT, "-%scomponents: component %" PetscInt_FMT " out of range [0, %" PetscInt_FMT ")", prefix, bc->comps[k], dim);

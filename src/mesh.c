@@ -29,12 +29,25 @@ static PetscErrorCode ReadMesh(MPI_Comm comm, const char file[], DM *dm)
 {
   PetscErrorCode ierr;
 
+  PetscMPIInt    rank;
+  int            bad = 0;
+
   PetscFunctionBeginUser;
   PetscCall(CheckMeshFile(comm, file));
-  PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
-  ierr = DMPlexCreateFromFile(comm, file, "spcontact", PETSC_TRUE, dm);
-  PetscCall(PetscPopErrorHandler());
-  PetscCheck(!ierr, comm, PETSC_ERR_USER_INPUT, "-mesh_file %s: gmsh reader failed (PETSc error %d); is the file complete?", file, (int)ierr);
+  /* Parse once on rank 0 alone: a truncated file then fails on rank 0 only and is reported to all,
+     instead of leaving the other ranks waiting in the reader's broadcast. */
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  if (rank == 0) {
+    DM probe = NULL;
+    PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
+    ierr = DMPlexCreateFromFile(PETSC_COMM_SELF, file, "spcontact", PETSC_FALSE, &probe);
+    PetscCall(PetscPopErrorHandler());
+    bad = ierr ? 1 : 0;
+    PetscCall(DMDestroy(&probe));
+  }
+  PetscCallMPI(MPI_Bcast(&bad, 1, MPI_INT, 0, comm));
+  PetscCheck(!bad, comm, PETSC_ERR_USER_INPUT, "-mesh_file %s: the gmsh reader failed; is the file complete?", file);
+  PetscCall(DMPlexCreateFromFile(comm, file, "spcontact", PETSC_TRUE, dm));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -46,6 +59,7 @@ static PetscErrorCode Distribute(DM *dm, const char partitioner[])
 
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_size(PetscObjectComm((PetscObject)*dm), &size));
+  PetscCheck(!strcmp(partitioner, "metis") || !strcmp(partitioner, "ptscotch") || !strcmp(partitioner, "simple"), PetscObjectComm((PetscObject)*dm), PETSC_ERR_USER_INPUT, "-mesh_partitioner %s: unknown partitioner (use metis, ptscotch or simple)", partitioner);
   if (size == 1) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(DMPlexGetPartitioner(*dm, &part));
   if (!strcmp(partitioner, "metis")) PetscCall(SPPartitionerSetMetis(*dm));

@@ -68,7 +68,9 @@ static PetscErrorCode CheckDirectory(SPOutput o)
   if (rank == 0) {
     char  probe[PETSC_MAX_PATH_LEN + 32];
     FILE *fp;
-    (void)PetscMkdir(o->dir);
+    PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
+    (void)PetscMkdir(o->dir); /* failure shows up as the probe below */
+    PetscCall(PetscPopErrorHandler());
     PetscCall(PetscSNPrintf(probe, sizeof(probe), "%s.probe", o->prefix));
     fp = fopen(probe, "w");
     if (!fp) ok = 0;
