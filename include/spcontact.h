@@ -32,6 +32,7 @@ PETSC_EXTERN PetscErrorCode SPLogRegister(SPLog *);
 PETSC_EXTERN PetscErrorCode SPMeshCreate(MPI_Comm, DM *);
 PETSC_EXTERN PetscErrorCode SPMeshCheckLabel(DM, const char[], PetscInt, const PetscInt[], const char[]);
 PETSC_EXTERN PetscErrorCode SPPartitionerSetMetis(DM);
+PETSC_EXTERN PetscErrorCode SPMeshGetLabelFacets(DM, const char[], PetscInt, const PetscInt[], PetscInt *, PetscInt **);
 PETSC_EXTERN PetscErrorCode SPMeshCreateCompletedLabel(DM, const char[], PetscInt, const PetscInt[], const char[], DMLabel *);
 
 /* problem.c, bc.c, materials/ */

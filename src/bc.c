@@ -56,30 +56,17 @@ PetscErrorCode SPBCSetFromOptions(MPI_Comm comm, PetscInt dim, PetscInt *nbc, SP
 /* Measure (area in 3D, length in 2D) of the labelled facets; each boundary facet lives on one rank */
 static PetscErrorCode LabelMeasure(DM dm, const SPBC *bc, PetscReal *measure)
 {
-  DMLabel   label;
   PetscReal local = 0.0;
-  PetscInt  fStart, fEnd;
+  PetscInt  n, *facets;
 
   PetscFunctionBeginUser;
-  PetscCall(DMGetLabel(dm, bc->label, &label));
-  PetscCall(DMPlexGetHeightStratum(dm, 1, &fStart, &fEnd));
-  for (PetscInt v = 0; v < bc->nvalues; ++v) {
-    IS              is;
-    const PetscInt *pts;
-    PetscInt        n = 0;
-    PetscCall(DMLabelGetStratumIS(label, bc->values[v], &is));
-    if (!is) continue;
-    PetscCall(ISGetLocalSize(is, &n));
-    PetscCall(ISGetIndices(is, &pts));
-    for (PetscInt k = 0; k < n; ++k) {
-      PetscReal vol;
-      if (pts[k] < fStart || pts[k] >= fEnd) continue;
-      PetscCall(DMPlexComputeCellGeometryFVM(dm, pts[k], &vol, NULL, NULL));
-      local += vol;
-    }
-    PetscCall(ISRestoreIndices(is, &pts));
-    PetscCall(ISDestroy(&is));
+  PetscCall(SPMeshGetLabelFacets(dm, bc->label, bc->nvalues, bc->values, &n, &facets));
+  for (PetscInt k = 0; k < n; ++k) {
+    PetscReal vol;
+    PetscCall(DMPlexComputeCellGeometryFVM(dm, facets[k], &vol, NULL, NULL));
+    local += vol;
   }
+  PetscCall(PetscFree(facets));
   PetscCallMPI(MPI_Allreduce(&local, measure, 1, MPIU_REAL, MPI_SUM, PetscObjectComm((PetscObject)dm)));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

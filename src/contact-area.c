@@ -75,16 +75,13 @@ static PetscErrorCode FacetVertices(DM dm, PetscInt f, PetscInt *nv, PetscInt ve
 /* Sum facet contributions into local vectors (area, facet measure, facet count), then to owners */
 static PetscErrorCode AccumulateFacets(SPContact c, Vec area, Vec meas, Vec count)
 {
-  DMLabel      label;
   PetscSection ls;
-  PetscInt     fStart, fEnd;
+  PetscInt     nf, *facets;
   Vec          la, lm, lc;
   PetscScalar *pa, *pm, *pc;
 
   PetscFunctionBeginUser;
-  PetscCall(DMGetLabel(c->dm, c->label, &label));
   PetscCall(DMGetLocalSection(c->dmC, &ls));
-  PetscCall(DMPlexGetHeightStratum(c->dm, 1, &fStart, &fEnd));
   PetscCall(DMGetLocalVector(c->dmC, &la));
   PetscCall(DMGetLocalVector(c->dmC, &lm));
   PetscCall(DMGetLocalVector(c->dmC, &lc));
@@ -94,30 +91,20 @@ static PetscErrorCode AccumulateFacets(SPContact c, Vec area, Vec meas, Vec coun
   PetscCall(VecGetArray(la, &pa));
   PetscCall(VecGetArray(lm, &pm));
   PetscCall(VecGetArray(lc, &pc));
-  for (PetscInt v = 0; v < c->nvalues; ++v) {
-    IS              is;
-    const PetscInt *pts;
-    PetscInt        n = 0;
-    PetscCall(DMLabelGetStratumIS(label, c->values[v], &is));
-    if (!is) continue;
-    PetscCall(ISGetLocalSize(is, &n));
-    PetscCall(ISGetIndices(is, &pts));
-    for (PetscInt k = 0; k < n; ++k) {
-      PetscInt  nv = 0, vert[4], off;
-      PetscReal x[12], w[4], m;
-      if (pts[k] < fStart || pts[k] >= fEnd) continue; /* facets only */
-      PetscCall(FacetVertices(c->dm, pts[k], &nv, vert, x));
-      FacetWeights(c->dim, nv, x, w, &m);
-      for (PetscInt a = 0; a < nv; ++a) {
-        PetscCall(PetscSectionGetOffset(ls, vert[a], &off));
-        pa[off] += w[a];
-        pm[off] += m;
-        pc[off] += 1.0;
-      }
+  PetscCall(SPMeshGetLabelFacets(c->dm, c->label, c->nvalues, c->values, &nf, &facets));
+  for (PetscInt k = 0; k < nf; ++k) {
+    PetscInt  nv = 0, vert[4], off;
+    PetscReal x[12], w[4], m;
+    PetscCall(FacetVertices(c->dm, facets[k], &nv, vert, x));
+    FacetWeights(c->dim, nv, x, w, &m);
+    for (PetscInt a = 0; a < nv; ++a) {
+      PetscCall(PetscSectionGetOffset(ls, vert[a], &off));
+      pa[off] += w[a];
+      pm[off] += m;
+      pc[off] += 1.0;
     }
-    PetscCall(ISRestoreIndices(is, &pts));
-    PetscCall(ISDestroy(&is));
   }
+  PetscCall(PetscFree(facets));
   PetscCall(VecRestoreArray(la, &pa));
   PetscCall(VecRestoreArray(lm, &pm));
   PetscCall(VecRestoreArray(lc, &pc));

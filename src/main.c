@@ -19,11 +19,18 @@ static PetscErrorCode ErrorHandler(MPI_Comm comm, int line, const char *fun, con
 
 static PetscErrorCode Run(PetscBool *converged)
 {
-  SPApp app = NULL;
+  SPApp     app = NULL;
+  PetscBool help;
 
   PetscFunctionBeginUser;
   PetscCall(SPAppCreate(PETSC_COMM_WORLD, &app));
   PetscCall(SPAppSetUp(app));
+  PetscCall(PetscOptionsHasHelp(NULL, &help));
+  if (help) { /* -help lists the options of every module (set up above) and stops */
+    *converged = PETSC_TRUE;
+    PetscCall(SPAppDestroy(&app));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
   PetscCall(SPAppRun(app, converged));
   PetscCall(SPAppSummary(app));
   PetscCall(SPAppDestroy(&app));

@@ -89,6 +89,10 @@ PetscErrorCode SPMeshCreate(MPI_Comm comm, DM *dm)
   PetscOptionsEnd();
   if (file[0]) PetscCall(ReadMesh(comm, file, dm));
   else {
+    PetscBool set;
+    /* Debian's PETSc has no simplex generator: default the box to tensor cells (Q1) */
+    PetscCall(PetscOptionsHasName(NULL, NULL, "-dm_plex_simplex", &set));
+    if (!set) PetscCall(PetscOptionsSetValue(NULL, "-dm_plex_simplex", "0"));
     PetscCall(DMCreate(comm, dm));
     PetscCall(DMSetType(*dm, DMPLEX));
   }
@@ -147,5 +151,37 @@ PetscErrorCode SPMeshCreateCompletedLabel(DM dm, const char src[], PetscInt nv, 
     PetscCall(ISDestroy(&is));
   }
   PetscCall(DMPlexLabelComplete(dm, *out));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The facets (height-1 points) of the given strata of label `name`, local to this rank; free with PetscFree */
+PetscErrorCode SPMeshGetLabelFacets(DM dm, const char name[], PetscInt nv, const PetscInt values[], PetscInt *n, PetscInt **facets)
+{
+  DMLabel  label;
+  PetscInt fStart, fEnd, total = 0;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMGetLabel(dm, name, &label));
+  PetscCall(DMPlexGetHeightStratum(dm, 1, &fStart, &fEnd));
+  for (PetscInt v = 0; v < nv; ++v) {
+    PetscInt size = 0;
+    if (label) PetscCall(DMLabelGetStratumSize(label, values[v], &size));
+    total += size;
+  }
+  PetscCall(PetscMalloc1(total + 1, facets));
+  *n = 0;
+  for (PetscInt v = 0; v < nv && label; ++v) {
+    IS              is;
+    const PetscInt *pts;
+    PetscInt        size = 0;
+    PetscCall(DMLabelGetStratumIS(label, values[v], &is));
+    if (!is) continue;
+    PetscCall(ISGetLocalSize(is, &size));
+    PetscCall(ISGetIndices(is, &pts));
+    for (PetscInt k = 0; k < size; ++k)
+      if (pts[k] >= fStart && pts[k] < fEnd) (*facets)[(*n)++] = pts[k];
+    PetscCall(ISRestoreIndices(is, &pts));
+    PetscCall(ISDestroy(&is));
+  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
