@@ -67,7 +67,7 @@ struct _n_SPContact {
   PetscInt             nob;
   SPObstacle           ob[SP_MAX_OBSTACLES];
   PetscReal            penalty, alpha, gapTol, stepCap;
-  PetscBool            safeguard;
+  PetscBool            safeguard, settled;
   PetscInt             regM, almMax;
   PetscBool            monitor;
   PetscInt             dim;

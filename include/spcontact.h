@@ -57,6 +57,7 @@ PETSC_EXTERN const char *const SPContactMethods[];
 typedef struct {
   PetscInt  activePoints, activeChanged, augmentations;
   PetscReal maxPenetration, maxShiftChange, peakPressure, contactRadius;
+  PetscReal gapError; /* max over points of the penetration and, on active points, |g| */
   PetscReal force[3];
 } SPContactStats;
 

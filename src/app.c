@@ -135,6 +135,7 @@ PetscErrorCode SPAppSummary(SPApp a)
     PetscCall(SPContactView(a->contact, v));
     PetscCall(PetscViewerASCIIPrintf(v, "contact_augmentations %" PetscInt_FMT "\ncontact_active_points %" PetscInt_FMT "\n", st.augmentations, st.activePoints));
     PetscCall(PetscViewerASCIIPrintf(v, "contact_max_penetration %.10e\n", (double)st.maxPenetration));
+    PetscCall(PetscViewerASCIIPrintf(v, "contact_gap_error %.10e\n", (double)st.gapError));
     PetscCall(PetscViewerASCIIPrintf(v, "contact_force_x %.12e\ncontact_force_y %.12e\ncontact_force_z %.12e\n", (double)st.force[0], (double)st.force[1], (double)st.force[2]));
     PetscCall(PetscViewerASCIIPrintf(v, "contact_peak_pressure %.12e\ncontact_radius %.10e\n", (double)st.peakPressure, (double)st.contactRadius));
   }

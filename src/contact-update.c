@@ -2,19 +2,27 @@
    active sets, the safeguards of method.md section 4, convergence, augmentation, statistics. */
 #include <spcontact-impl.h>
 
-static PetscErrorCode Reduce(SPContact c, PetscInt nloc[2], PetscReal rloc[2])
+/* Constraint error of point i: its penetration, and for an active point also an open gap (an
+   active point carrying pressure across a gap, as after a shift overshoot, violates g = 0 too) */
+static inline PetscReal GapError(PetscReal g, PetscBool active)
 {
-  MPI_Comm comm = PetscObjectComm((PetscObject)c->dm);
-  PetscInt nall[2];
-  PetscReal rall[2];
+  return active ? PetscAbsReal(g) : PetscMax(0.0, -g);
+}
+
+static PetscErrorCode Reduce(SPContact c, PetscInt nloc[2], PetscReal rloc[3])
+{
+  MPI_Comm  comm = PetscObjectComm((PetscObject)c->dm);
+  PetscInt  nall[2];
+  PetscReal rall[3];
 
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Allreduce(nloc, nall, 2, MPIU_INT, MPI_SUM, comm));
-  PetscCallMPI(MPI_Allreduce(rloc, rall, 2, MPIU_REAL, MPI_MAX, comm));
+  PetscCallMPI(MPI_Allreduce(rloc, rall, 3, MPIU_REAL, MPI_MAX, comm));
   c->stats.activePoints   = nall[0];
   c->stats.activeChanged  = nall[1];
   c->stats.maxPenetration = rall[0];
   c->stats.maxShiftChange = rall[1];
+  c->stats.gapError       = rall[2];
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -22,7 +30,7 @@ static PetscErrorCode Reduce(SPContact c, PetscInt nloc[2], PetscReal rloc[2])
 static PetscErrorCode Bookkeep(SPContact c, const PetscScalar s[], PetscReal maxDs, PetscBool compare)
 {
   PetscInt  n[2] = {0, 0};
-  PetscReal r[2] = {0.0, maxDs};
+  PetscReal r[3] = {0.0, maxDs, 0.0};
 
   PetscFunctionBeginUser;
   for (PetscInt i = 0; i < c->n; ++i) {
@@ -31,6 +39,7 @@ static PetscErrorCode Bookkeep(SPContact c, const PetscScalar s[], PetscReal max
     if (compare) n[1] += c->active[i] != c->activePrev[i];
     c->activePrev[i] = c->active[i];
     r[0]             = PetscMax(r[0], -c->gap[i]);
+    r[2]             = PetscMax(r[2], GapError(c->gap[i], c->active[i]));
   }
   PetscCall(Reduce(c, n, r));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -89,17 +98,41 @@ static PetscReal UpdatePoint(SPContact c, PetscInt i, PetscReal s)
   return c->inactiveCount[i] >= 2 ? 0.0 : s; /* reset after two inactive iterates in a row */
 }
 
+/* Whether the in-Newton shift update applies at this boundary: not once the gap tolerance holds
+   (an update then only perturbs a converged state), and, with -contact_shift_settled, only when
+   no point changed its active state in the last iteration (the contraction k/(k+eps) of
+   method.md section 2 needs a settled active set; an update during a change overshoots). */
+static PetscErrorCode ShiftUpdateApplies(SPContact c, const PetscScalar s[], PetscBool *applies)
+{
+  PetscInt  n = 0, nall;
+  PetscReal err = 0.0, errAll;
+  MPI_Comm  comm = PetscObjectComm((PetscObject)c->dm);
+
+  PetscFunctionBeginUser;
+  for (PetscInt i = 0; i < c->n; ++i) {
+    const PetscBool active = SPContactLawActive(c->gap[i], PetscRealPart(s[i]));
+    n += active != c->activePrev[i];
+    err = PetscMax(err, GapError(c->gap[i], active));
+  }
+  PetscCallMPI(MPI_Allreduce(&n, &nall, 1, MPIU_INT, MPI_SUM, comm));
+  PetscCallMPI(MPI_Allreduce(&err, &errAll, 1, MPIU_REAL, MPI_MAX, comm));
+  *applies = c->entry->updatesInNewton && errAll > c->gapTol && (nall == 0 || !c->settled) ? PETSC_TRUE : PETSC_FALSE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* At a Newton-iteration boundary, on the new iterate W: gaps, shift update (in-Newton methods),
    active-set change. *changed says the residual must be recomputed for the new shift. */
 PetscErrorCode SPContactNewtonUpdate(SPContact c, Vec W, PetscBool *changed)
 {
   PetscScalar *s;
   PetscReal    maxDs = 0.0, all;
+  PetscBool    applies = PETSC_FALSE;
 
   PetscFunctionBeginUser;
   PetscCall(EvaluateGlobal(c, W));
   PetscCall(VecGetArray(c->shift, &s));
-  if (c->entry->updatesInNewton)
+  PetscCall(ShiftUpdateApplies(c, s, &applies));
+  if (applies)
     for (PetscInt i = 0; i < c->n; ++i) {
       const PetscReal old = PetscRealPart(s[i]);
       s[i]                = UpdatePoint(c, i, old);
@@ -149,7 +182,7 @@ PetscErrorCode SPContactAugment(SPContact c, Vec X, PetscBool *done)
   PetscCall(EvaluateGlobal(c, X));
   PetscCall(VecGetArray(c->shift, &s));
   PetscCall(Bookkeep(c, s, 0.0, PETSC_FALSE));
-  *done = c->stats.maxPenetration <= c->gapTol ? PETSC_TRUE : PETSC_FALSE;
+  *done = c->stats.gapError <= c->gapTol ? PETSC_TRUE : PETSC_FALSE;
   if (!*done) {
     for (PetscInt i = 0; i < c->n; ++i) {
       const PetscReal old = PetscRealPart(s[i]);
@@ -168,7 +201,7 @@ PetscErrorCode SPContactConverged(SPContact c, PetscBool *ok)
 {
   PetscFunctionBeginUser;
   *ok = c->stats.activeChanged == 0 ? PETSC_TRUE : PETSC_FALSE;
-  if (c->entry->checksGap && c->stats.maxPenetration > c->gapTol) *ok = PETSC_FALSE;
+  if (c->entry->checksGap && c->stats.gapError > c->gapTol) *ok = PETSC_FALSE;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -20,6 +20,7 @@ PetscErrorCode SPContactCreate(DM dm, SPProblem problem, SPContact *contact)
   c->almMax  = 30;
   c->stepCap = 1.0;
   c->safeguard = PETSC_TRUE;
+  c->settled   = PETSC_TRUE;
   c->nvalues = SP_MAX_VALUES;
   PetscCall(PetscStrcpy(c->label, "Face Sets"));
   PetscCall(DMGetDimension(dm, &c->dim));
@@ -70,11 +71,12 @@ PetscErrorCode SPContactSetFromOptions(SPContact c)
   PetscCall(PetscOptionsIntArray("-contact_values", "Label values of the slave boundary", "SPContactSetFromOptions", c->values, &c->nvalues, &setValues));
   PetscCall(PetscOptionsReal("-contact_penalty", "Absolute penalty eps per unit area (stress/length); default: alpha E / h", "SPContactSetFromOptions", c->penalty, &c->penalty, &setPenalty));
   PetscCall(PetscOptionsReal("-contact_alpha", "Penalty factor: eps = alpha E / h, h the mean slave facet size at the point", "SPContactSetFromOptions", c->alpha, &c->alpha, NULL));
-  PetscCall(PetscOptionsReal("-contact_gap_tol", "Shifted/alm methods: converged only when max penetration <= gap_tol", "SPContactSetFromOptions", c->gapTol, &c->gapTol, NULL));
+  PetscCall(PetscOptionsReal("-contact_gap_tol", "Shifted/alm methods: converged only when no point penetrates more than gap_tol and every active point has |gap| <= gap_tol", "SPContactSetFromOptions", c->gapTol, &c->gapTol, NULL));
   PetscCall(PetscOptionsInt("-contact_regression_m", "shifted_regression: number of (shift, gap) pairs in the fit (>= 3)", "SPContactSetFromOptions", c->regM, &c->regM, NULL));
   PetscCall(PetscOptionsInt("-contact_alm_max", "alm: maximum number of augmentations", "SPContactSetFromOptions", c->almMax, &c->almMax, NULL));
   PetscCall(PetscOptionsReal("-contact_step_cap", "Newton step control: scale a step so no point penetrates deeper than step_cap x h in one step (0: off)", "SPContactSetFromOptions", c->stepCap, &c->stepCap, NULL));
   PetscCall(PetscOptionsBool("-contact_safeguard", "Update the shift only of points active in both the previous and the new iterate (method.md 4.1); false only to demonstrate chatter", "SPContactSetFromOptions", c->safeguard, &c->safeguard, NULL));
+  PetscCall(PetscOptionsBool("-contact_shift_settled", "In-Newton shift update only at iterations whose active set did not change (the contraction rate holds only then)", "SPContactSetFromOptions", c->settled, &c->settled, NULL));
   PetscCall(PetscOptionsBool("-contact_monitor", "Print one line per Newton iteration: residual, active points, max penetration, max shift change", "SPContactSetFromOptions", c->monitor, &c->monitor, NULL));
   PetscOptionsEnd();
   if (!setValues) c->nvalues = 0;

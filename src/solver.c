@@ -149,7 +149,7 @@ static PetscErrorCode LogIteration(SPSolver s, PetscInt it, PetscReal fnorm)
   lits -= s->lastLinear;
   s->lastLinear += lits;
   if (on && s->contact->monitor)
-    PetscCall(PetscPrintf(PetscObjectComm((PetscObject)s->dm), "  contact %3" PetscInt_FMT " |F| %.6e active %" PetscInt_FMT " changed %" PetscInt_FMT " max_penetration %.6e max_shift_change %.6e\n", it, (double)fnorm, st.activePoints, st.activeChanged, (double)st.maxPenetration, (double)st.maxShiftChange));
+    PetscCall(PetscPrintf(PetscObjectComm((PetscObject)s->dm), "  contact %3" PetscInt_FMT " |F| %.6e active %" PetscInt_FMT " changed %" PetscInt_FMT " max_penetration %.6e gap_error %.6e max_shift_change %.6e\n", it, (double)fnorm, st.activePoints, st.activeChanged, (double)st.maxPenetration, (double)st.gapError, (double)st.maxShiftChange));
   if (s->history)
     PetscCall(PetscFPrintf(PetscObjectComm((PetscObject)s->dm), s->history, "%" PetscInt_FMT ",%" PetscInt_FMT ",%" PetscInt_FMT ",%.10e,%" PetscInt_FMT ",%.10e,%.10e,%" PetscInt_FMT "\n", s->step, st.augmentations, it, (double)fnorm, st.activePoints, (double)st.maxPenetration, (double)st.maxShiftChange, lits));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -288,7 +288,7 @@ PetscErrorCode SPSolverSolve(SPSolver s, Vec u, SNESConvergedReason *reason)
     PetscCall(SPContactAugment(s->contact, u, &done));
     if (done) break;
     if (k >= s->contact->almMax) {
-      PetscCall(PetscPrintf(PetscObjectComm((PetscObject)s->dm), "alm: gap tolerance %g not reached after %" PetscInt_FMT " augmentations (max penetration %g); raise -contact_alm_max\n", (double)s->contact->gapTol, k, (double)s->contact->stats.maxPenetration));
+      PetscCall(PetscPrintf(PetscObjectComm((PetscObject)s->dm), "alm: gap tolerance %g not reached after %" PetscInt_FMT " augmentations (gap error %g); raise -contact_alm_max\n", (double)s->contact->gapTol, k, (double)s->contact->stats.gapError));
       *reason = SNES_DIVERGED_MAX_IT;
       break;
     }
