@@ -4,9 +4,9 @@
 # max |p - q| / q over all contact points, from the contact-points CSV
 max_pressure_dev() { awk -F, -v q="$2" 'NR>1 { d = ($8 - q) / q; if (d < 0) d = -d; if (d > m) m = d } END { printf "%.3e\n", m }' "$1"; }
 
-b1_case() { # b1_case DIM METHOD: B1 block, figures vs exact
-  local dim=$1 m=$2 out=$CASE_DIR/run.txt
-  spc "$out" 1 -options_file input/block${dim}d.opts -contact_method "$m" -output_dir "$CASE_DIR" || return 1
+b1_case() { # b1_case DIM METHOD [NP]: B1 block, figures vs exact
+  local dim=$1 m=$2 np=${3:-1} out=$CASE_DIR/run.txt
+  spc "$out" "$np" -options_file input/block${dim}d.opts -contact_method "$m" -output_dir "$CASE_DIR" || return 1
   local comp=y eps=80; [ "$dim" = 3 ] && comp=z && eps=60
   local rc=0
   assert_eq converged "$(sval "$out" converged)" yes || rc=1
@@ -26,6 +26,9 @@ test_contact_b1_2d_alm()                { b1_case 2 alm; }
 test_contact_b1_3d_penalty()            { b1_case 3 penalty; }
 test_contact_b1_3d_shifted()            { b1_case 3 shifted; }
 test_contact_b1_3d_alm()                { b1_case 3 alm; }
+test_contact_b1_2d_penalty_np3()        { b1_case 2 penalty 3; }
+test_contact_b1_3d_shifted_np2()        { b1_case 3 shifted 2; }
+test_contact_b1_3d_alm_np3()            { b1_case 3 alm 3; }
 
 # B2 Hertz 2D: b = 0.107641, p0 = 0.0591431; h at the contact edge ~ 0.0045 (hertz2d.geo)
 hertz2d_case() { # hertz2d_case METHOD NP [extra options]
