@@ -98,48 +98,35 @@ fnd_mms() {
 fnd_box2() { echo "-dm_plex_dim 2 -dm_plex_simplex 0 -dm_plex_box_faces $1,$1"; }
 fnd_box3() { echo "-dm_plex_dim 3 -dm_plex_simplex 0 -dm_plex_box_faces $1,$1,$1"; }
 
+# Three mesh levels in FND_LEVELS: a box of N cells per side refined 0, 1, 2 times (-dm_refine
+# refines the serial mesh, labels carried over), or gmsh simplex meshes with 4, 8, 16 per side.
+fnd_levels_box() { local b; b=$(fnd_box"$1" "$2"); FND_LEVELS=("$b" "$b -dm_refine 1" "$b -dm_refine 2"); }
+fnd_levels_gmsh() { # square|cube
+  FND_LEVELS=()
+  for n in 4 8 16; do
+    fnd_gmsh_"$1" $n "$CASE_DIR/$1$n.msh" || return 1
+    FND_LEVELS+=("-mesh_file $CASE_DIR/$1$n.msh")
+  done
+}
+
 # --- manufactured solutions: u = A prod sin(pi x_d) (c+1), homogeneous Dirichlet on every face ---
-test_foundation_mms_p1_2d() {
-  fnd_setup
-  for n in 4 8 16; do fnd_gmsh_square $n "$CASE_DIR/sq$n.msh" || return 1; done
-  fnd_mms mms_p1_2d 1 1.8 2.3 "-mesh_file $CASE_DIR/sq4.msh" "-mesh_file $CASE_DIR/sq8.msh" "-mesh_file $CASE_DIR/sq16.msh" -- $FND_MMS2D -petscspace_degree 1
+# fnd_mms_case LABEL NP RATE_LO RATE_HI DEGREE DIM: on the levels in FND_LEVELS
+fnd_mms_case() {
+  local mms=$FND_MMS2D; [ "$6" = 3 ] && mms=$FND_MMS3D
+  # shellcheck disable=SC2086
+  fnd_mms "$1" "$2" "$3" "$4" "${FND_LEVELS[@]}" -- $mms -petscspace_degree "$5"
 }
 
-test_foundation_mms_q1_2d() {
-  fnd_setup
-  fnd_mms mms_q1_2d 1 1.8 2.3 "$(fnd_box2 4)" "$(fnd_box2 8)" "$(fnd_box2 16)" -- $FND_MMS2D -petscspace_degree 1
-}
-
-test_foundation_mms_p2_2d() {
-  fnd_setup
-  for n in 4 8 16; do fnd_gmsh_square $n "$CASE_DIR/sq$n.msh" || return 1; done
-  fnd_mms mms_p2_2d 1 2.7 3.4 "-mesh_file $CASE_DIR/sq4.msh" "-mesh_file $CASE_DIR/sq8.msh" "-mesh_file $CASE_DIR/sq16.msh" -- $FND_MMS2D -petscspace_degree 2
-}
-
-# Q2 and 3D Q1 refine with -dm_refine k (regular refinement of the serial mesh, labels carried over)
-test_foundation_mms_q2_2d() {
-  fnd_setup
-  fnd_mms mms_q2_2d 1 2.7 3.4 "$(fnd_box2 4)" "$(fnd_box2 4) -dm_refine 1" "$(fnd_box2 4) -dm_refine 2" -- $FND_MMS2D -petscspace_degree 2
-}
-
-test_foundation_mms_q1_3d() {
-  fnd_setup
-  fnd_mms mms_q1_3d 2 1.8 2.3 "$(fnd_box3 2)" "$(fnd_box3 2) -dm_refine 1" "$(fnd_box3 2) -dm_refine 2" -- $FND_MMS3D -petscspace_degree 1
-}
-
+test_foundation_mms_p1_2d() { fnd_setup; fnd_levels_gmsh square || return 1; fnd_mms_case mms_p1_2d 1 1.8 2.3 1 2; }
+test_foundation_mms_q1_2d() { fnd_setup; fnd_levels_box 2 4; fnd_mms_case mms_q1_2d 1 1.8 2.3 1 2; }
+test_foundation_mms_p2_2d() { fnd_setup; fnd_levels_gmsh square || return 1; fnd_mms_case mms_p2_2d 1 2.7 3.4 2 2; }
+test_foundation_mms_q2_2d() { fnd_setup; fnd_levels_box 2 4; fnd_mms_case mms_q2_2d 1 2.7 3.4 2 2; }
+test_foundation_mms_q1_3d() { fnd_setup; fnd_levels_box 3 2; fnd_mms_case mms_q1_3d 2 1.8 2.3 1 3; }
 # P1 tetrahedra are pre-asymptotic on 2-8 (rate 1.75), so 4, 8, 16 (the finest has 24576 cells)
-test_foundation_mms_p1_3d() {
-  fnd_setup
-  for n in 4 8 16; do fnd_gmsh_cube $n "$CASE_DIR/cube$n.msh" || return 1; done
-  fnd_mms mms_p1_3d 2 1.8 2.3 "-mesh_file $CASE_DIR/cube4.msh" "-mesh_file $CASE_DIR/cube8.msh" "-mesh_file $CASE_DIR/cube16.msh" -- $FND_MMS3D -petscspace_degree 1
-}
-
+test_foundation_mms_p1_3d() { fnd_setup; fnd_levels_gmsh cube || return 1; fnd_mms_case mms_p1_3d 2 1.8 2.3 1 3; }
 # Q2 hexahedra: 1, 2, 4 cells per side on 1 rank (a 1-cell mesh cannot go on 2 ranks; 8^3 Q2
 # takes ~20 s, too slow for this suite)
-test_foundation_mms_q2_3d() {
-  fnd_setup
-  fnd_mms mms_q2_3d 1 2.7 3.4 "$(fnd_box3 1)" "$(fnd_box3 2)" "$(fnd_box3 4)" -- $FND_MMS3D -petscspace_degree 2
-}
+test_foundation_mms_q2_3d() { fnd_setup; fnd_levels_box 3 1; fnd_mms_case mms_q2_3d 1 2.7 3.4 2 3; }
 
 # --- hand-coded Jacobian against finite differences (PETSc -snes_test_jacobian) ---
 # fnd_jacobian LABEL NP ARGS... : asserts every ||J - Jfd||_F/||J||_F printed is < 1e-6
