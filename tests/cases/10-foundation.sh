@@ -9,11 +9,9 @@ fnd_setup() {
   export OMPI_MCA_mpi_yield_when_idle=${OMPI_MCA_mpi_yield_when_idle:-1}
 }
 
-# fnd_gmsh_square N FILE [S]: unit square, N x N edges, structured triangles (S=1, default) or an
-# unstructured triangulation (S=0). Physical curves numbered like the PETSc box "Face Sets":
-# 1 bottom y=0, 2 right x=1, 3 top y=1, 4 left x=0; surface 10.
-fnd_gmsh_square() {
-  local n=$1 out=$2 s=${3:-1} geo=${2%.msh}.geo
+# fnd_gmsh_geo DIM N FILE S: the unit square (DIM 2), or the cube extruded from it (DIM 3)
+fnd_gmsh_geo() {
+  local dim=$1 n=$2 out=$3 s=$4 geo=${3%.msh}.geo
   cat >"$geo" <<'EOF'
 If (!Exists(N)) N = 4; EndIf
 If (!Exists(S)) S = 1; EndIf
@@ -24,39 +22,34 @@ Curve Loop(1) = {1, 2, 3, 4}; Plane Surface(1) = {1};
 If (S)
   Transfinite Curve{1, 2, 3, 4} = N + 1; Transfinite Surface{1};
 EndIf
-Physical Curve(1) = {1}; Physical Curve(2) = {2}; Physical Curve(3) = {3}; Physical Curve(4) = {4};
-Physical Surface(10) = {1};
+If (D == 2)
+  Physical Curve(1) = {1}; Physical Curve(2) = {2}; Physical Curve(3) = {3}; Physical Curve(4) = {4};
+  Physical Surface(10) = {1};
+Else
+  If (S)
+    out[] = Extrude {0, 0, 1} { Surface{1}; Layers{N}; };
+  Else
+    out[] = Extrude {0, 0, 1} { Surface{1}; };
+  EndIf
+  // out[0] top z=1, out[1] volume, out[2..5] sides extruded from lines 1..4 (y=0, x=1, y=1, x=0)
+  Physical Surface(1) = {1}; Physical Surface(2) = {out[0]}; Physical Surface(3) = {out[2]};
+  Physical Surface(4) = {out[4]}; Physical Surface(5) = {out[3]}; Physical Surface(6) = {out[5]};
+  Physical Volume(10) = {out[1]};
+EndIf
 EOF
-  gmsh -v 2 -2 -format msh22 -setnumber N "$n" -setnumber S "$s" -o "$out" "$geo" >/dev/null ||
+  gmsh -v 2 -"$dim" -format msh22 -setnumber D "$dim" -setnumber N "$n" -setnumber S "$s" -o "$out" "$geo" >/dev/null ||
     { echo "gmsh failed on $geo (is gmsh installed?)"; return 1; }
 }
+
+# fnd_gmsh_square N FILE [S]: unit square, N x N edges, structured triangles (S=1, default) or an
+# unstructured triangulation (S=0). Physical curves numbered like the PETSc box "Face Sets":
+# 1 bottom y=0, 2 right x=1, 3 top y=1, 4 left x=0; surface 10.
+fnd_gmsh_square() { fnd_gmsh_geo 2 "$1" "$2" "${3:-1}"; }
 
 # fnd_gmsh_cube N FILE [S]: unit cube of tetrahedra, N edges per side (S=1: structured, extruded
 # layers split into tets; S=0: unstructured). Physical surfaces numbered like the PETSc 3D box:
 # 1 z=0, 2 z=1, 3 y=0, 4 y=1, 5 x=1, 6 x=0; volume 10.
-fnd_gmsh_cube() {
-  local n=$1 out=$2 s=${3:-1} geo=${2%.msh}.geo
-  cat >"$geo" <<'EOF'
-If (!Exists(N)) N = 4; EndIf
-If (!Exists(S)) S = 1; EndIf
-Point(1) = {0, 0, 0, 1.0 / N}; Point(2) = {1, 0, 0, 1.0 / N};
-Point(3) = {1, 1, 0, 1.0 / N}; Point(4) = {0, 1, 0, 1.0 / N};
-Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 1};
-Curve Loop(1) = {1, 2, 3, 4}; Plane Surface(1) = {1};
-If (S)
-  Transfinite Curve{1, 2, 3, 4} = N + 1; Transfinite Surface{1};
-  out[] = Extrude {0, 0, 1} { Surface{1}; Layers{N}; };
-Else
-  out[] = Extrude {0, 0, 1} { Surface{1}; };
-EndIf
-// out[0] top z=1, out[1] volume, out[2..5] sides extruded from lines 1..4 (y=0, x=1, y=1, x=0)
-Physical Surface(1) = {1}; Physical Surface(2) = {out[0]}; Physical Surface(3) = {out[2]};
-Physical Surface(4) = {out[4]}; Physical Surface(5) = {out[3]}; Physical Surface(6) = {out[5]};
-Physical Volume(10) = {out[1]};
-EOF
-  gmsh -v 2 -3 -format msh22 -setnumber N "$n" -setnumber S "$s" -o "$out" "$geo" >/dev/null ||
-    { echo "gmsh failed on $geo (is gmsh installed?)"; return 1; }
-}
+fnd_gmsh_cube() { fnd_gmsh_geo 3 "$1" "$2" "${3:-1}"; }
 
 FND_MMS2D="-bc_0_type dirichlet -bc_0_values 1,2,3,4 -material_mms 0.01"
 FND_MMS3D="-bc_0_type dirichlet -bc_0_values 1,2,3,4,5,6 -material_mms 0.01"
