@@ -96,6 +96,24 @@ test_contact_b4_indent() {
   return $rc
 }
 
+# The seed's claim on B2 (counts, not timings): at alpha = 100 and 1000 the shifted penalty meets
+# the gap tolerance within 3 Newton iterations of penalty and with no more than the nested alm
+# (on this linear problem each augmented solve costs one iteration, so alm ties; see README).
+test_contact_claim_b2() {
+  local rc=0 a m
+  for a in 100 1000; do
+    for m in penalty shifted alm; do
+      spc "$CASE_DIR/${m}_$a.txt" 1 -options_file input/hertz2d.opts -contact_method $m -contact_alpha $a -pc_type cholesky -output_dir "$CASE_DIR" -output_name "${m}_$a" -output_fields false || rc=1
+    done
+    local np ns na; np=$(sval "$CASE_DIR/penalty_$a.txt" newton_iterations); ns=$(sval "$CASE_DIR/shifted_$a.txt" newton_iterations); na=$(sval "$CASE_DIR/alm_$a.txt" newton_iterations)
+    echo "alpha $a: Newton iterations penalty $np shifted $ns alm $na"
+    assert_le "alpha${a}_shifted_gap_error" "$(sval "$CASE_DIR/shifted_$a.txt" contact_gap_error)" 1e-10 || rc=1
+    assert_le "alpha${a}_shifted_vs_penalty_plus_3" "$ns" $((np + 3)) || rc=1
+    assert_le "alpha${a}_shifted_vs_alm" "$ns" "$na" || rc=1
+  done
+  return $rc
+}
+
 # The seed's update contracts the penetration by rho = k_c/(k_c + eps) = 1/81 per Newton iteration
 test_contact_shift_contraction() {
   local out=$CASE_DIR/run.txt rc=0
