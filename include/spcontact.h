@@ -67,6 +67,7 @@ PETSC_EXTERN PetscErrorCode SPContactIsActive(SPContact, PetscBool *);
 PETSC_EXTERN PetscErrorCode SPContactGetMethod(SPContact, SPContactMethod *);
 PETSC_EXTERN PetscErrorCode SPContactAddResidual(SPContact, Vec, Vec);
 PETSC_EXTERN PetscErrorCode SPContactAddJacobian(SPContact, Vec, Mat);
+PETSC_EXTERN PetscErrorCode SPContactSetUpJacobian(SPContact, Vec, Mat, Mat);
 PETSC_EXTERN PetscErrorCode SPContactBeginSolve(SPContact, Vec);
 PETSC_EXTERN PetscErrorCode SPContactNewtonUpdate(SPContact, Vec, PetscBool *);
 PETSC_EXTERN PetscErrorCode SPContactLimitStep(SPContact, Vec, Vec, Vec, PetscBool *);

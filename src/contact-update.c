@@ -30,7 +30,7 @@ static PetscErrorCode Bookkeep(SPContact c, const PetscScalar s[], PetscReal max
     n[0] += c->active[i];
     if (compare) n[1] += c->active[i] != c->activePrev[i];
     c->activePrev[i] = c->active[i];
-    r[0]             = PetscMax(r[0], -c->gap[i]);
+    if (c->facet[i] != SP_ELEM_NONE) r[0] = PetscMax(r[0], -c->gap[i]);
   }
   PetscCall(Reduce(c, n, r));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -189,8 +189,10 @@ PetscErrorCode SPContactRestoreState(SPContact c)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Resultant contact force on the body, peak pressure, and the extent of the pressure zone
-   measured from the peak point (reference coordinates). Uses the last evaluated gaps. */
+/* Resultant contact force on the slave bodies (points of obstacle slaves and of the user's pairs'
+   slave surfaces: with two passes it includes the force they receive as masters), peak recovered
+   pressure, and the extent of the pressure zone measured from the peak point (reference
+   coordinates). Uses the last evaluated state; collective. */
 PetscErrorCode SPContactComputeStats(SPContact c, const PetscScalar s[])
 {
   MPI_Comm  comm = PetscObjectComm((PetscObject)c->dm);
@@ -200,9 +202,11 @@ PetscErrorCode SPContactComputeStats(SPContact c, const PetscScalar s[])
 
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  PetscCall(SPContactRecoverForces(c, s));
   for (PetscInt i = 0; i < c->n; ++i) {
-    const PetscReal p = SPContactLawPressure(c->gap[i], PetscRealPart(s[i]), c->eps[i]);
-    for (PetscInt d = 0; d < c->dim; ++d) f[d] += c->area[i] * p * c->normal[i * c->dim + d];
+    const PetscReal p = c->press[i];
+    if (c->primary[i])
+      for (PetscInt d = 0; d < c->dim; ++d) f[d] += c->fpt[i * c->dim + d];
     if (p > peak[0]) peak[0] = p, ipeak = i;
   }
   PetscCallMPI(MPI_Allreduce(f, c->stats.force, 3, MPIU_REAL, MPI_SUM, comm));
@@ -213,7 +217,7 @@ PetscErrorCode SPContactComputeStats(SPContact c, const PetscScalar s[])
   PetscCallMPI(MPI_Bcast(xp, 3, MPIU_REAL, (PetscMPIInt)gpeak[1], comm));
   for (PetscInt i = 0; i < c->n; ++i) {
     PetscReal dx[3] = {0, 0, 0};
-    if (SPContactLawPressure(c->gap[i], PetscRealPart(s[i]), c->eps[i]) <= 0.0) continue;
+    if (c->press[i] <= 0.0) continue;
     for (PetscInt d = 0; d < c->dim; ++d) dx[d] = c->coord[i * c->dim + d] - xp[d];
     rmax = PetscMax(rmax, SPNorm(c->dim, dx));
   }
