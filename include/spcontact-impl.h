@@ -145,6 +145,7 @@ PETSC_EXTERN PetscErrorCode SPContactPointElement(SPContact, PetscInt, PetscInt 
 PETSC_EXTERN PetscErrorCode SPContactFacetVertices(DM, PetscInt, PetscInt *, PetscInt[], PetscReal[]);
 /* contact-pairs.c */
 PETSC_EXTERN PetscErrorCode SPContactPairsSetFromOptions(SPContact);
+PETSC_EXTERN PetscErrorCode SPContactPairsCheckLabels(SPContact);
 PETSC_EXTERN PetscErrorCode SPContactPairsSetUp(SPContact);
 PETSC_EXTERN PetscErrorCode SPContactPairsExchange(SPContact, const PetscScalar[]);
 PETSC_EXTERN PetscErrorCode SPContactPairsProject(SPContact, PetscInt, PetscInt *, PetscReal *, PetscReal *, PetscReal[]);

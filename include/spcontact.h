@@ -58,6 +58,8 @@ typedef struct {
   PetscInt  activePoints, activeChanged, augmentations;
   PetscReal maxPenetration, maxShiftChange, peakPressure, contactRadius;
   PetscReal force[3];
+  PetscReal forceMaster[3]; /* contact pairs: force on the master vertices of the user pairs' elements */
+  PetscInt  remoteElements; /* contact pairs: elements whose master facet is owned by another rank */
 } SPContactStats;
 
 PETSC_EXTERN PetscErrorCode SPContactCreate(DM, SPProblem, SPContact *);
@@ -74,6 +76,7 @@ PETSC_EXTERN PetscErrorCode SPContactLimitStep(SPContact, Vec, Vec, Vec, PetscBo
 PETSC_EXTERN PetscErrorCode SPContactAugment(SPContact, Vec, PetscBool *);
 PETSC_EXTERN PetscErrorCode SPContactConverged(SPContact, PetscBool *);
 PETSC_EXTERN PetscErrorCode SPContactGetStats(SPContact, SPContactStats *);
+PETSC_EXTERN PetscErrorCode SPContactReportStep(SPContact, Vec, PetscInt, PetscReal);
 PETSC_EXTERN PetscErrorCode SPContactSaveState(SPContact);
 PETSC_EXTERN PetscErrorCode SPContactRestoreState(SPContact);
 PETSC_EXTERN PetscErrorCode SPContactGetFields(SPContact, Vec, Vec, Vec, Vec, Vec);

@@ -131,7 +131,8 @@ PetscErrorCode SPContactAddJacobian(SPContact c, Vec locX, Mat J)
 PetscErrorCode SPContactRecoverForces(SPContact c, const PetscScalar s[])
 {
   const PetscInt     dim = c->dim;
-  PetscInt           rstart;
+  PetscInt           rstart, remote = 0;
+  PetscReal          fm[3] = {0, 0, 0};
   const PetscScalar *f;
 
   PetscFunctionBeginUser;
@@ -148,11 +149,15 @@ PetscErrorCode SPContactRecoverForces(SPContact c, const PetscScalar s[])
       const PetscInt a = k / dim, cp = a == 0 ? rstart + i : c->mf[c->facet[i]].cp[a - 1];
       idx[k] = cp >= 0 ? cp * dim + k % dim : -1;
       fs[k]  = -r[k]; /* force on the body = -residual */
+      if (a > 0 && !c->pair[c->mf[c->facet[i]].pair].mirror) fm[k % dim] -= r[k];
     }
+    if (c->facet[i] >= 0 && (c->facet[i] < c->mfStart || c->facet[i] >= c->mfStart + c->nmfOwned)) remote++;
     PetscCall(VecSetValues(c->fvec, nd, idx, fs, ADD_VALUES));
   }
   PetscCall(VecAssemblyBegin(c->fvec));
   PetscCall(VecAssemblyEnd(c->fvec));
+  PetscCallMPI(MPI_Allreduce(fm, c->stats.forceMaster, 3, MPIU_REAL, MPI_SUM, PetscObjectComm((PetscObject)c->dm)));
+  PetscCallMPI(MPI_Allreduce(&remote, &c->stats.remoteElements, 1, MPIU_INT, MPI_SUM, PetscObjectComm((PetscObject)c->dm)));
   PetscCall(VecGetArrayRead(c->fvec, &f));
   for (PetscInt i = 0; i < c->n; ++i) {
     PetscReal fi[3] = {0, 0, 0};

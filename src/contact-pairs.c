@@ -228,6 +228,20 @@ static PetscErrorCode MarkFreeEnds(SPContact c)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Every pair's label and values exist and are not empty */
+PetscErrorCode SPContactPairsCheckLabels(SPContact c)
+{
+  PetscFunctionBeginUser;
+  for (PetscInt k = 0; k < c->nuser; ++k) {
+    char opt[64];
+    PetscCall(PetscSNPrintf(opt, sizeof(opt), "-contact_pair_%" PetscInt_FMT "_slave_values", k));
+    PetscCall(SPMeshCheckLabel(c->dm, c->pair[k].label, c->pair[k].nslave, c->pair[k].slave, opt));
+    PetscCall(PetscSNPrintf(opt, sizeof(opt), "-contact_pair_%" PetscInt_FMT "_master_values", k));
+    PetscCall(SPMeshCheckLabel(c->dm, c->pair[k].label, c->pair[k].nmaster, c->pair[k].master, opt));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode SPContactPairsSetUp(SPContact c)
 {
   MPI_Comm       comm = PetscObjectComm((PetscObject)c->dm);
@@ -238,13 +252,6 @@ PetscErrorCode SPContactPairsSetUp(SPContact c)
 
   PetscFunctionBeginUser;
   if (!c->npair) PetscFunctionReturn(PETSC_SUCCESS);
-  for (PetscInt k = 0; k < c->nuser; ++k) {
-    char opt[64];
-    PetscCall(PetscSNPrintf(opt, sizeof(opt), "-contact_pair_%" PetscInt_FMT "_slave_values", k));
-    PetscCall(SPMeshCheckLabel(c->dm, c->pair[k].label, c->pair[k].nslave, c->pair[k].slave, opt));
-    PetscCall(PetscSNPrintf(opt, sizeof(opt), "-contact_pair_%" PetscInt_FMT "_master_values", k));
-    PetscCall(SPMeshCheckLabel(c->dm, c->pair[k].label, c->pair[k].nmaster, c->pair[k].master, opt));
-  }
   PetscCallMPI(MPI_Comm_size(comm, &size));
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   PetscCall(OwnedFacets(c, &nown, &own, &c->mfVert));

@@ -237,3 +237,26 @@ PetscErrorCode SPContactGetStats(SPContact c, SPContactStats *stats)
   *stats = c->stats;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
+
+/* Contact pairs: one line per converged load step (force on the slave and on the master
+   surfaces, max penetration, peak pressure), so load paths (sliding) can be checked step by step */
+PetscErrorCode SPContactReportStep(SPContact c, Vec X, PetscInt step, PetscReal load)
+{
+  const PetscScalar *s;
+  Vec                locX;
+  PetscReal          pen = 0.0, all;
+
+  PetscFunctionBeginUser;
+  if (!c->enabled || !c->npair) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(SPProblemGetLocalState(c->problem, X, &locX));
+  PetscCall(SPContactEvaluate(c, locX));
+  PetscCall(SPProblemRestoreLocalState(c->problem, &locX));
+  PetscCall(VecGetArrayRead(c->shift, &s));
+  PetscCall(SPContactComputeStats(c, s));
+  PetscCall(VecRestoreArrayRead(c->shift, &s));
+  for (PetscInt i = 0; i < c->n; ++i)
+    if (c->facet[i] != SP_ELEM_NONE) pen = PetscMax(pen, -c->gap[i]);
+  PetscCallMPI(MPI_Allreduce(&pen, &all, 1, MPIU_REAL, MPI_MAX, PetscObjectComm((PetscObject)c->dm)));
+  PetscCall(PetscPrintf(PetscObjectComm((PetscObject)c->dm), "contact_step %" PetscInt_FMT " load %.6f force %.12e %.12e master_force %.12e %.12e max_penetration %.6e peak_pressure %.10e\n", step, (double)load, (double)c->stats.force[0], (double)c->stats.force[1], (double)c->stats.forceMaster[0], (double)c->stats.forceMaster[1], (double)all, (double)c->stats.peakPressure));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}

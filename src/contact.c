@@ -241,7 +241,8 @@ PetscErrorCode SPContactSetUp(SPContact c)
     PetscCall(SPMeshCheckLabel(c->dm, c->label, c->nvalues, c->values, "-contact_values"));
     PetscCall(SPMeshCreateCompletedLabel(c->dm, c->label, c->nvalues, c->values, "spcontact_slave", &slave));
   }
-  for (PetscInt k = 0; k < c->npair; ++k) /* the union of every slave surface; labels were checked */
+  PetscCall(SPContactPairsCheckLabels(c));
+  for (PetscInt k = 0; k < c->npair; ++k) /* the union of every slave surface */
     PetscCall(SPMeshCreateCompletedLabel(c->dm, c->pair[k].label, c->pair[k].nslave, c->pair[k].slave, "spcontact_slave", &slave));
   PetscCall(CreatePointDM(c, slave));
   PetscCall(CollectPoints(c));
@@ -376,6 +377,11 @@ PetscErrorCode SPContactView(SPContact c, PetscViewer v)
   PetscCall(PetscViewerASCIIPrintf(v, "contact_master_facets %" PetscInt_FMT "\n", c->nmf));
   PetscCall(PetscViewerASCIIPrintf(v, "contact_exchanges %" PetscInt_FMT "\ncontact_exchange_time %.6f\n", c->exchanges, (double)c->exchangeTime));
   PetscCall(PetscViewerASCIIPrintf(v, "contact_pattern_rebuilds %" PetscInt_FMT "\n", c->rebuilds));
+  if (c->npair) { /* mallocs during MatSetValues on the Jacobian (0: the preallocation held) */
+    MatInfo info;
+    PetscCall(MatGetInfo(c->Jref, MAT_GLOBAL_SUM, &info));
+    PetscCall(PetscViewerASCIIPrintf(v, "contact_jacobian_mallocs %g\n", (double)info.mallocs));
+  }
   PetscCall(PetscViewerASCIIPrintf(v, "contact_alpha %g\n", c->penalty > 0.0 ? 0.0 : (double)c->alpha));
   PetscCall(PetscViewerASCIIPrintf(v, "contact_eps_min %.10e\ncontact_eps_max %.10e\n", (double)gmin, (double)gmax));
   PetscCall(PetscViewerASCIIPrintf(v, "contact_gap_tol %g\n", (double)c->gapTol));
