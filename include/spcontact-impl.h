@@ -68,7 +68,7 @@ typedef struct {
    normal point out of the master body (see kernels/contact-pair.h). */
 #define SP_FACET_MAXV 4
 typedef struct {
-  PetscInt  pair, nv;
+  PetscInt  pair, nv, gid;               /* gid: global facet number (owner rank's offset + index) */
   PetscInt  vid[SP_FACET_MAXV];         /* global vertex numbers (junctions, free ends) */
   PetscInt  cp[SP_FACET_MAXV];          /* global contact-point number of each vertex, -1 if none */
   PetscInt  dof[SP_FACET_MAXV * 3];     /* global displacement dofs; constrained: -(i+1) */
@@ -114,13 +114,16 @@ struct _n_SPContact {
   SPPair          pair[2 * SP_MAX_PAIRS];
   PetscBool       twoPass;
   SPPairTangent   pairTangent;
-  PetscInt        nmf, mfStart, nmfOwned; /* master facets: all, this rank's first and count */
-  SPMasterFacet  *mf;
+  PetscInt        nmfAll, mfStart, nmfOwned; /* master facets: global count, this rank's first gid and count */
+  SPMasterFacet  *own;             /* this rank's owned master facets */
   PetscInt       *mfVert;          /* owned master facets: local plex vertices, SP_FACET_MAXV each */
-  PetscMPIInt    *mfCounts, *mfDispls;
-  PetscReal      *mfSend, *mfRecv;
+  PetscInt        nmf, mfCap;      /* received master facets (from every rank, this one included) */
+  SPMasterFacet  *mf;
+  PetscBool       exchangeAll;     /* -contact_pair_exchange all: no bounding-box filter */
+  PetscReal       margin;          /* bounding boxes are inflated by this (2 x the largest facet size) */
   PetscLogDouble  exchangeTime;
   PetscInt        exchanges, rebuilds;
+  PetscInt64      received;        /* facets received, summed over exchanges and ranks */
   PetscInt       *sdof;            /* per point: dim global dofs of the slave vertex */
   PetscInt       *pairMask;        /* per point: bit k set = slave of pair k */
   PetscBool      *onObstacle, *primary; /* slave of the obstacles; counts in the force */

@@ -151,7 +151,7 @@ PetscErrorCode SPContactRecoverForces(SPContact c, const PetscScalar s[])
       fs[k]  = -r[k]; /* force on the body = -residual */
       if (a > 0 && !c->pair[c->mf[c->facet[i]].pair].mirror) fm[k % dim] -= r[k];
     }
-    if (c->facet[i] >= 0 && (c->facet[i] < c->mfStart || c->facet[i] >= c->mfStart + c->nmfOwned)) remote++;
+    if (c->facet[i] >= 0 && (c->mf[c->facet[i]].gid < c->mfStart || c->mf[c->facet[i]].gid >= c->mfStart + c->nmfOwned)) remote++;
     PetscCall(VecSetValues(c->fvec, nd, idx, fs, ADD_VALUES));
   }
   PetscCall(VecAssemblyBegin(c->fvec));

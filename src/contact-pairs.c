@@ -1,11 +1,13 @@
 /* Contact pairs (deformable-deformable contact, 2D node-to-segment): pair options, the master
    facet table, its exchange between ranks at every evaluation, and the closest-point search.
 
-   Exchange (first, measured step): every rank owns the master facets of its part; at every
-   evaluation each rank sends the deformed coordinates of its owned master facets to every rank
-   (MPI_Allgatherv of 2 x dim reals per segment), so each rank holds the whole master geometry.
-   The static part (vertex ids, global dofs, contact-point numbers, reference coordinates) is
-   gathered once at set-up. The cost is printed in the summary (contact_exchange_time).
+   Exchange: every rank owns the master facets of its part. At every evaluation the ranks share
+   their slave bounding boxes (deformed, inflated by twice the largest slave/master facet size),
+   and each rank sends its owned master facets (deformed coordinates, global dofs, contact-point
+   numbers) to the ranks whose box they meet (MPI_Alltoallv). -contact_pair_exchange_all sends to
+   every rank (the whole-surface gather, for comparison). The cost is printed in the summary
+   (contact_exchange_time, contact_exchange_facets_per_rank). The free ends of the master
+   surfaces come from a one-time gather of the whole table at set-up.
 
    Projection rule (documented in the README): among the master segments of the point's pairs, the
    one whose closest point (parameter clamped to [0,1]) is nearest wins; on a tie (a shared
@@ -57,6 +59,7 @@ PetscErrorCode SPContactPairsSetFromOptions(SPContact c)
   PetscFunctionBeginUser;
   PetscOptionsBegin(comm, NULL, "Contact pairs", "spcontact");
   PetscCall(PetscOptionsEList("-contact_pair_tangent", "Contact pairs: second variation of the gap in the tangent: auto (once the active set is settled), full (always), frozen (never)", "SPContactPairsSetFromOptions", PairTangents, 3, PairTangents[tangent], &tangent, NULL));
+  PetscCall(PetscOptionsBool("-contact_pair_exchange_all", "Contact pairs: send every master facet to every rank at each evaluation (default: only to ranks whose slave bounding box, inflated by 2 x the largest facet, they meet)", "SPContactPairsSetFromOptions", c->exchangeAll, &c->exchangeAll, NULL));
   PetscCall(PetscOptionsBool("-contact_two_pass", "Contact pairs: each surface also acts as slave of the other (mirrored pair); each pass carries half of the areas", "SPContactPairsSetFromOptions", c->twoPass, &c->twoPass, NULL));
   PetscOptionsEnd();
   c->pairTangent = (SPPairTangent)tangent;
@@ -242,70 +245,136 @@ PetscErrorCode SPContactPairsCheckLabels(SPContact c)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode SPContactPairsSetUp(SPContact c)
+/* Global facet numbers, free ends (from a one-time gather of the whole table) and the margin */
+static PetscErrorCode SetUpStatic(SPContact c)
 {
   MPI_Comm       comm = PetscObjectComm((PetscObject)c->dm);
-  PetscMPIInt    size, rank, mine;
-  PetscInt       nown = 0;
-  SPMasterFacet *own  = NULL;
-  PetscMPIInt   *cnt, *dsp;
+  PetscMPIInt    size, rank, mine = (PetscMPIInt)c->nmfOwned, *cnt, *dsp, *cb, *db;
+  PetscReal      hmax = 0.0;
 
   PetscFunctionBeginUser;
-  if (!c->npair) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCallMPI(MPI_Comm_size(comm, &size));
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
-  PetscCall(OwnedFacets(c, &nown, &own, &c->mfVert));
-  mine = (PetscMPIInt)nown;
-  PetscCall(PetscMalloc2(size, &cnt, size + 1, &dsp));
+  PetscCall(PetscMalloc4(size, &cnt, size + 1, &dsp, size, &cb, size, &db));
   PetscCallMPI(MPI_Allgather(&mine, 1, MPI_INT, cnt, 1, MPI_INT, comm));
   dsp[0] = 0;
   for (PetscMPIInt r = 0; r < size; ++r) dsp[r + 1] = dsp[r] + cnt[r];
-  c->nmf      = dsp[size];
-  c->nmfOwned = nown;
-  c->mfStart  = dsp[rank];
-  PetscCall(PetscCalloc1(c->nmf + 1, &c->mf));
-  { /* the static table, as bytes */
-    PetscMPIInt *cb, *db;
-    PetscCall(PetscMalloc2(size, &cb, size, &db));
-    for (PetscMPIInt r = 0; r < size; ++r) cb[r] = cnt[r] * (PetscMPIInt)sizeof(SPMasterFacet), db[r] = dsp[r] * (PetscMPIInt)sizeof(SPMasterFacet);
-    PetscCallMPI(MPI_Allgatherv(own, mine * (PetscMPIInt)sizeof(SPMasterFacet), MPI_BYTE, c->mf, cb, db, MPI_BYTE, comm));
-    PetscCall(PetscFree2(cb, db));
+  c->nmfAll  = dsp[size];
+  c->mfStart = dsp[rank];
+  PetscCheck(c->nmfAll > 0, comm, PETSC_ERR_USER_INPUT, "contact pairs: the master surfaces have no facets");
+  for (PetscInt j = 0; j < c->nmfOwned; ++j) c->own[j].gid = c->mfStart + j;
+  c->nmf = c->mfCap = c->nmfAll;
+  PetscCall(PetscCalloc1(c->mfCap, &c->mf));
+  for (PetscMPIInt r = 0; r < size; ++r) cb[r] = cnt[r] * (PetscMPIInt)sizeof(SPMasterFacet), db[r] = dsp[r] * (PetscMPIInt)sizeof(SPMasterFacet);
+  PetscCallMPI(MPI_Allgatherv(c->own, mine * (PetscMPIInt)sizeof(SPMasterFacet), MPI_BYTE, c->mf, cb, db, MPI_BYTE, comm));
+  PetscCall(MarkFreeEnds(c));
+  for (PetscInt j = 0; j < c->nmfOwned; ++j) c->own[j] = c->mf[c->mfStart + j];
+  for (PetscInt f = 0; f < c->nmf; ++f) {
+    PetscReal t[3];
+    for (PetscInt k = 0; k < c->dim; ++k) t[k] = c->mf[f].X[c->dim + k] - c->mf[f].X[k];
+    hmax = PetscMax(hmax, SPNorm(c->dim, t));
   }
-  PetscCall(PetscFree(own));
-  PetscCheck(c->nmf > 0, comm, PETSC_ERR_USER_INPUT, "contact pairs: the master surfaces have no facets");
-  /* the exchange of deformed coordinates: SP_FACET_MAXV * dim reals per facet */
-  PetscCall(PetscMalloc2(size, &c->mfCounts, size, &c->mfDispls));
-  for (PetscMPIInt r = 0; r < size; ++r) c->mfCounts[r] = cnt[r] * SP_FACET_MAXV * (PetscMPIInt)c->dim, c->mfDispls[r] = dsp[r] * SP_FACET_MAXV * (PetscMPIInt)c->dim;
-  PetscCall(PetscMalloc2(nown * SP_FACET_MAXV * c->dim + 1, &c->mfSend, c->nmf * SP_FACET_MAXV * c->dim + 1, &c->mfRecv));
-  PetscCall(PetscFree2(cnt, dsp));
-    PetscCall(MarkFreeEnds(c));
+  for (PetscInt i = 0; i < c->n; ++i) hmax = PetscMax(hmax, c->h[i]);
+  PetscCallMPI(MPI_Allreduce(&hmax, &c->margin, 1, MPIU_REAL, MPI_MAX, comm));
+  c->margin *= 2.0;
+  PetscCall(PetscFree4(cnt, dsp, cb, db));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Deformed master geometry at the local displacement u on every rank (collective) */
+PetscErrorCode SPContactPairsSetUp(SPContact c)
+{
+  PetscFunctionBeginUser;
+  if (!c->npair) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(OwnedFacets(c, &c->nmfOwned, &c->own, &c->mfVert));
+  PetscCall(SetUpStatic(c));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* This rank's slave bounding box (deformed), inflated by the margin; empty: lo > hi */
+static void SlaveBox(SPContact c, PetscReal box[])
+{
+  const PetscInt dim = c->dim;
+  for (PetscInt d = 0; d < dim; ++d) box[d] = PETSC_MAX_REAL, box[dim + d] = -PETSC_MAX_REAL;
+  for (PetscInt i = 0; i < c->n; ++i) {
+    if (!c->pairMask[i]) continue;
+    for (PetscInt d = 0; d < dim; ++d) {
+      box[d]       = PetscMin(box[d], c->xs[i * dim + d] - c->margin);
+      box[dim + d] = PetscMax(box[dim + d], c->xs[i * dim + d] + c->margin);
+    }
+  }
+}
+
+static PetscBool FacetMeets(const SPMasterFacet *m, PetscInt dim, const PetscReal box[])
+{
+  for (PetscInt d = 0; d < dim; ++d) {
+    PetscReal lo = PETSC_MAX_REAL, hi = -PETSC_MAX_REAL;
+    for (PetscInt a = 0; a < m->nv; ++a) lo = PetscMin(lo, m->x[a * dim + d]), hi = PetscMax(hi, m->x[a * dim + d]);
+    if (hi < box[d] || lo > box[dim + d]) return PETSC_FALSE;
+  }
+  return PETSC_TRUE;
+}
+
+/* Deformed master geometry at the local displacement u: each rank sends its owned master facets to
+   every rank whose slave bounding box (inflated by the margin) they meet, or to every rank with
+   -contact_pair_exchange all. Needs c->xs of the current state. Collective. */
 PetscErrorCode SPContactPairsExchange(SPContact c, const PetscScalar u[])
 {
-  const PetscInt dim = c->dim, stride = SP_FACET_MAXV * dim;
+  MPI_Comm       comm = PetscObjectComm((PetscObject)c->dm);
+  const PetscInt dim  = c->dim, sz = (PetscInt)sizeof(SPMasterFacet);
+  PetscMPIInt    size, *scnt, *sdsp, *rcnt, *rdsp;
+  PetscReal      box[6], *boxes;
   PetscSection   ls;
+  SPMasterFacet *send;
+  PetscInt       nsend = 0, nrecv = 0;
   PetscLogDouble t0, t1;
 
   PetscFunctionBeginUser;
   PetscCall(PetscTime(&t0));
+  PetscCallMPI(MPI_Comm_size(comm, &size));
   PetscCall(DMGetLocalSection(c->dm, &ls));
   for (PetscInt j = 0; j < c->nmfOwned; ++j) {
-    const SPMasterFacet *m = &c->mf[c->mfStart + j];
+    SPMasterFacet *m = &c->own[j];
     for (PetscInt a = 0; a < m->nv; ++a) {
       PetscInt off;
       PetscCall(PetscSectionGetOffset(ls, c->mfVert[j * SP_FACET_MAXV + a], &off));
-      for (PetscInt d = 0; d < dim; ++d) c->mfSend[j * stride + a * dim + d] = m->X[a * dim + d] + PetscRealPart(u[off + d]);
+      for (PetscInt d = 0; d < dim; ++d) m->x[a * dim + d] = m->X[a * dim + d] + PetscRealPart(u[off + d]);
     }
   }
-  PetscCallMPI(MPI_Allgatherv(c->mfSend, (PetscMPIInt)(c->nmfOwned * stride), MPIU_REAL, c->mfRecv, c->mfCounts, c->mfDispls, MPIU_REAL, PetscObjectComm((PetscObject)c->dm)));
-  for (PetscInt f = 0; f < c->nmf; ++f)
-    for (PetscInt k = 0; k < c->mf[f].nv * dim; ++k) c->mf[f].x[k] = c->mfRecv[f * stride + k];
+  SlaveBox(c, box);
+  PetscCall(PetscMalloc5(size * 2 * dim, &boxes, size, &scnt, size + 1, &sdsp, size, &rcnt, size + 1, &rdsp));
+  PetscCallMPI(MPI_Allgather(box, (PetscMPIInt)(2 * dim), MPIU_REAL, boxes, (PetscMPIInt)(2 * dim), MPIU_REAL, comm));
+  for (PetscMPIInt r = 0; r < size; ++r) {
+    scnt[r] = 0;
+    for (PetscInt j = 0; j < c->nmfOwned; ++j)
+      if (c->exchangeAll || FacetMeets(&c->own[j], dim, &boxes[r * 2 * dim])) scnt[r]++;
+    nsend += scnt[r];
+  }
+  PetscCall(PetscMalloc1(nsend + 1, &send));
+  sdsp[0] = 0;
+  for (PetscMPIInt r = 0; r < size; ++r) {
+    PetscInt k = sdsp[r];
+    for (PetscInt j = 0; j < c->nmfOwned; ++j)
+      if (c->exchangeAll || FacetMeets(&c->own[j], dim, &boxes[r * 2 * dim])) send[k++] = c->own[j];
+    sdsp[r + 1] = (PetscMPIInt)k;
+  }
+  PetscCallMPI(MPI_Alltoall(scnt, 1, MPI_INT, rcnt, 1, MPI_INT, comm));
+  rdsp[0] = 0;
+  for (PetscMPIInt r = 0; r < size; ++r) rdsp[r + 1] = rdsp[r] + rcnt[r];
+  nrecv = rdsp[size];
+  if (nrecv > c->mfCap) {
+    PetscCall(PetscFree(c->mf));
+    c->mfCap = nrecv;
+    PetscCall(PetscMalloc1(c->mfCap, &c->mf));
+  }
+  for (PetscMPIInt r = 0; r < size; ++r) scnt[r] *= (PetscMPIInt)sz, sdsp[r] *= (PetscMPIInt)sz, rcnt[r] *= (PetscMPIInt)sz, rdsp[r] *= (PetscMPIInt)sz;
+  PetscCallMPI(MPI_Alltoallv(send, scnt, sdsp, MPI_BYTE, c->mf, rcnt, rdsp, MPI_BYTE, comm));
+  c->nmf = nrecv;
+  PetscCall(PetscFree(send));
+  PetscCall(PetscFree5(boxes, scnt, sdsp, rcnt, rdsp));
   PetscCall(PetscTime(&t1));
   c->exchangeTime += t1 - t0;
   c->exchanges++;
+  c->received += nrecv;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -356,8 +425,7 @@ PetscErrorCode SPContactPairsDestroy(SPContact c)
 {
   PetscFunctionBeginUser;
   PetscCall(PetscFree(c->mf));
+  PetscCall(PetscFree(c->own));
   PetscCall(PetscFree(c->mfVert));
-  if (c->mfCounts) PetscCall(PetscFree2(c->mfCounts, c->mfDispls));
-  if (c->mfSend) PetscCall(PetscFree2(c->mfSend, c->mfRecv));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

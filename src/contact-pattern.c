@@ -1,7 +1,7 @@
 /* The Jacobian's nonzero pattern with the contact-pair couplings (slave vertex <-> master facet
    vertices, possibly on other ranks). DMCreateMatrix preallocates the bulk pattern only. Before
    each Jacobian assembly, SPContactSetUpJacobian checks that every active pair element's block is
-   already in the pattern (each point remembers the master facets it was coupled to); if any is
+   already in the pattern (each point remembers the global numbers of the master facets it was coupled to); if any is
    missing on any rank, the pattern is rebuilt: a MATPREALLOCATOR receives the current pattern of P
    (row by row) plus the blocks of every current pair element (active or not, to anticipate), and
    MatPreallocatorPreallocate re-preallocates P in place and fills it with zeros. The pattern only
@@ -64,7 +64,7 @@ static PetscErrorCode Rebuild(SPContact c, Mat P)
     if (c->facet[i] < 0) continue;
     PetscCall(SPContactPointElement(c, i, &nd, dofs, &A, &g, Nv, NULL));
     PetscCall(MatSetValues(pre, nd, dofs, nd, dofs, zeros, INSERT_VALUES));
-    Remember(c, i, c->facet[i]);
+    Remember(c, i, c->mf[c->facet[i]].gid);
   }
   PetscCall(MatAssemblyBegin(pre, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(pre, MAT_FINAL_ASSEMBLY));
@@ -99,7 +99,7 @@ PetscErrorCode SPContactSetUpJacobian(SPContact c, Vec locX, Mat P, Mat K)
   PetscCall(SPContactEvaluate(c, locX));
   PetscCall(VecGetArrayRead(c->shift, &s));
   for (PetscInt i = 0; i < c->n && !missing; ++i)
-    if (c->facet[i] >= 0 && SPContactLawActive(c->gap[i], PetscRealPart(s[i])) && !Known(c, i, c->facet[i])) missing = 1;
+    if (c->facet[i] >= 0 && SPContactLawActive(c->gap[i], PetscRealPart(s[i])) && !Known(c, i, c->mf[c->facet[i]].gid)) missing = 1;
   PetscCall(VecRestoreArrayRead(c->shift, &s));
   PetscCallMPI(MPI_Allreduce(&missing, &any, 1, MPIU_INT, MPI_MAX, PetscObjectComm((PetscObject)P)));
   if (!any) PetscFunctionReturn(PETSC_SUCCESS);

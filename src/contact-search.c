@@ -41,12 +41,15 @@ PetscErrorCode SPContactEvaluate(SPContact c, Vec locX)
   PetscFunctionBeginUser;
   PetscCall(SPProblemGetLoadFactor(c->problem, &load));
   PetscCall(VecGetArrayRead(locX, &u));
+  for (PetscInt i = 0; i < c->n; ++i) {
+    PetscInt dofs[3];
+    PetscCall(SPContactPointDofs(c, i, dofs));
+    for (PetscInt d = 0; d < c->dim; ++d) c->xs[i * c->dim + d] = c->coord[i * c->dim + d] + PetscRealPart(u[dofs[d]]);
+  }
   if (c->npair) PetscCall(SPContactPairsExchange(c, u));
   for (PetscInt i = 0; i < c->n; ++i) {
-    PetscInt   dofs[3];
     PetscReal *x = &c->xs[i * c->dim], *n = &c->normal[i * c->dim];
-    PetscCall(SPContactPointDofs(c, i, dofs));
-    for (PetscInt d = 0; d < c->dim; ++d) x[d] = c->coord[i * c->dim + d] + PetscRealPart(u[dofs[d]]), n[d] = 0.0;
+    for (PetscInt d = 0; d < c->dim; ++d) n[d] = 0.0;
     c->gap[i]   = PETSC_MAX_REAL;
     c->facet[i] = SP_ELEM_NONE;
     if (c->pairMask[i]) PetscCall(SPContactPairsProject(c, i, &c->facet[i], &c->xi[i], &c->gap[i], n));

@@ -374,8 +374,17 @@ PetscErrorCode SPContactView(SPContact c, PetscViewer v)
   PetscCall(PetscViewerASCIIPrintf(v, "contact_points %" PetscInt_FMT "\n", nAll));
   PetscCall(PetscViewerASCIIPrintf(v, "contact_obstacles %" PetscInt_FMT "\n", c->nob));
   PetscCall(PetscViewerASCIIPrintf(v, "contact_pairs %" PetscInt_FMT "\ncontact_two_pass %s\n", c->nuser, c->twoPass ? "yes" : "no"));
-  PetscCall(PetscViewerASCIIPrintf(v, "contact_master_facets %" PetscInt_FMT "\n", c->nmf));
-  PetscCall(PetscViewerASCIIPrintf(v, "contact_exchanges %" PetscInt_FMT "\ncontact_exchange_time %.6f\n", c->exchanges, (double)c->exchangeTime));
+  PetscCall(PetscViewerASCIIPrintf(v, "contact_master_facets %" PetscInt_FMT "\n", c->nmfAll));
+  {
+    PetscInt64     rec;
+    PetscLogDouble tmax;
+    PetscMPIInt    size;
+    PetscCallMPI(MPI_Comm_size(PetscObjectComm((PetscObject)c->dm), &size));
+    PetscCallMPI(MPI_Allreduce(&c->received, &rec, 1, MPIU_INT64, MPI_SUM, PetscObjectComm((PetscObject)c->dm)));
+    PetscCallMPI(MPI_Allreduce(&c->exchangeTime, &tmax, 1, MPI_DOUBLE, MPI_MAX, PetscObjectComm((PetscObject)c->dm)));
+    PetscCall(PetscViewerASCIIPrintf(v, "contact_exchanges %" PetscInt_FMT "\ncontact_exchange_time %.6f\n", c->exchanges, (double)tmax));
+    PetscCall(PetscViewerASCIIPrintf(v, "contact_exchange_facets_per_rank %.1f\n", c->exchanges ? (double)rec / (double)(c->exchanges * size) : 0.0));
+  }
   PetscCall(PetscViewerASCIIPrintf(v, "contact_pattern_rebuilds %" PetscInt_FMT "\n", c->rebuilds));
   if (c->npair) { /* mallocs during MatSetValues on the Jacobian (0: the preallocation held) */
     MatInfo info;
