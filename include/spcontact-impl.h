@@ -4,6 +4,7 @@
 
 #include <spcontact.h>
 #include <kernels/contact-law.h>
+#include <kernels/contact-pair.h>
 
 typedef enum { SP_BC_DIRICHLET, SP_BC_TRACTION, SP_BC_PRESSURE, SP_BC_FORCE } SPBCType;
 PETSC_EXTERN const char *const SPBCTypes[];
@@ -55,6 +56,33 @@ typedef struct {
 } SPMethodEntry;
 PETSC_EXTERN const SPMethodEntry *SPContactMethodEntry(SPContactMethod);
 
+/* A contact pair: slave and master surfaces, label values of one label (contact-pairs.c) */
+#define SP_MAX_PAIRS 8 /* user pairs per run (-contact_pair_0_.. ); -contact_two_pass mirrors them */
+typedef struct {
+  char      label[PETSC_MAX_PATH_LEN];
+  PetscInt  nslave, slave[SP_MAX_VALUES], nmaster, master[SP_MAX_VALUES];
+  PetscBool mirror; /* added by -contact_two_pass: the user pair with slave and master swapped */
+} SPPair;
+
+/* One master facet as every rank sees it after the exchange. The vertex order makes the facet
+   normal point out of the master body (see kernels/contact-pair.h). */
+#define SP_FACET_MAXV 4
+typedef struct {
+  PetscInt  pair, nv, gid;               /* gid: global facet number (owner rank's offset + index) */
+  PetscInt  vid[SP_FACET_MAXV];         /* global vertex numbers (junctions, free ends) */
+  PetscInt  cp[SP_FACET_MAXV];          /* global contact-point number of each vertex, -1 if none */
+  PetscInt  dof[SP_FACET_MAXV * 3];     /* global displacement dofs; constrained: -(i+1) */
+  PetscBool freeEnd[SP_FACET_MAXV];     /* vertex belongs to no other master facet of the pair */
+  PetscReal X[SP_FACET_MAXV * 3];       /* reference coordinates */
+  PetscReal x[SP_FACET_MAXV * 3];       /* deformed coordinates at the last evaluation */
+} SPMasterFacet;
+
+/* element kinds of a contact point (c->facet[i] >= 0: a master facet) */
+#define SP_ELEM_NONE     (-2)
+#define SP_ELEM_OBSTACLE (-1)
+#define SP_KNOWN_FACETS  16
+typedef enum { SP_PAIR_TANGENT_AUTO, SP_PAIR_TANGENT_FULL, SP_PAIR_TANGENT_FROZEN } SPPairTangent; /* master facets per point remembered as being in the Jacobian pattern */
+
 struct _n_SPContact {
   DM                   dm; /* displacement DM, not owned */
   SPProblem            problem;
@@ -81,6 +109,30 @@ struct _n_SPContact {
   PetscInt  *inactiveCount;
   PetscReal *histS, *histG; /* regression history, regM per point, newest last */
   PetscInt  *nhist;
+  /* contact pairs (contact-pairs.c); a point may be a slave of obstacles and of several pairs */
+  PetscInt        npair, nuser; /* all pairs (mirrors included), user pairs */
+  SPPair          pair[2 * SP_MAX_PAIRS];
+  PetscBool       twoPass;
+  SPPairTangent   pairTangent;
+  PetscInt        nmfAll, mfStart, nmfOwned; /* master facets: global count, this rank's first gid and count */
+  SPMasterFacet  *own;             /* this rank's owned master facets */
+  PetscInt       *mfVert;          /* owned master facets: local plex vertices, SP_FACET_MAXV each */
+  PetscInt        nmf, mfCap;      /* received master facets (from every rank, this one included) */
+  SPMasterFacet  *mf;
+  PetscBool       exchangeAll;     /* -contact_pair_exchange all: no bounding-box filter */
+  PetscReal       margin;          /* bounding boxes are inflated by this (2 x the largest facet size) */
+  PetscLogDouble  exchangeTime;
+  PetscInt        exchanges, rebuilds;
+  PetscInt64      received;        /* facets received, summed over exchanges and ranks */
+  PetscInt       *sdof;            /* per point: dim global dofs of the slave vertex */
+  PetscInt       *pairMask;        /* per point: bit k set = slave of pair k */
+  PetscBool      *onObstacle, *primary; /* slave of the obstacles; counts in the force */
+  PetscInt       *facet;           /* per point: master facet, SP_ELEM_OBSTACLE or SP_ELEM_NONE */
+  PetscReal      *xi, *xs;         /* projection parameter, deformed slave position (dim) */
+  PetscReal      *press, *fpt;     /* recovered pressure, nodal contact force (dim) */
+  PetscInt       *known;           /* per point: master facets already in the Jacobian pattern */
+  Vec             Fc, fvec;        /* global contact residual; nodal forces at contact points */
+  Mat             Jref;            /* last Jacobian whose pattern was extended (not owned) */
   Vec        shift, shiftSaved;  /* global vectors on dmC */
   Vec        pressure;           /* recovered pressure (global on dmC) */
   SPContactStats stats;
@@ -91,8 +143,17 @@ PETSC_EXTERN PetscErrorCode SPContactEvaluate(SPContact, Vec);
 PETSC_EXTERN PetscErrorCode SPContactComputeStats(SPContact, const PetscScalar *);
 PETSC_EXTERN PetscErrorCode SPContactComputeAreas(SPContact);
 PETSC_EXTERN PetscErrorCode SPContactPointDofs(SPContact, PetscInt, PetscInt[]);
-PETSC_EXTERN PetscErrorCode SPContactPointLaw(SPContact, PetscInt, const PetscScalar[], PetscReal, PetscReal[], PetscReal[]);
-PETSC_EXTERN PetscErrorCode SPContactRecoverPressure(SPContact, const PetscScalar *);
+PETSC_EXTERN PetscErrorCode SPContactRecoverForces(SPContact, const PetscScalar *);
+PETSC_EXTERN PetscErrorCode SPContactPointElement(SPContact, PetscInt, PetscInt *, PetscInt[], PetscReal *, PetscReal *, PetscReal[], PetscReal[]);
+PETSC_EXTERN PetscErrorCode SPContactFacetVertices(DM, PetscInt, PetscInt *, PetscInt[], PetscReal[]);
+/* contact-pairs.c */
+PETSC_EXTERN PetscErrorCode SPContactPairsSetFromOptions(SPContact);
+PETSC_EXTERN PetscErrorCode SPContactPairsCheckLabels(SPContact);
+PETSC_EXTERN PetscErrorCode SPContactPairsSetUp(SPContact);
+PETSC_EXTERN PetscErrorCode SPContactPairsExchange(SPContact, const PetscScalar[]);
+PETSC_EXTERN PetscErrorCode SPContactPairsProject(SPContact, PetscInt, PetscInt *, PetscReal *, PetscReal *, PetscReal[]);
+PETSC_EXTERN PetscErrorCode SPContactPairsDestroy(SPContact);
+PETSC_EXTERN PetscBool      SPContactPairGeometricTangent(SPContact);
 PETSC_EXTERN PetscErrorCode SPOutputWriteXdmf(SPOutput);
 
 struct _n_SPSolver {

@@ -59,6 +59,8 @@ typedef struct {
   PetscReal maxPenetration, maxShiftChange, peakPressure, contactRadius;
   PetscReal gapError; /* max over points of the penetration and, on active points, |g| */
   PetscReal force[3];
+  PetscReal forceMaster[3]; /* contact pairs: force on the master vertices of the user pairs' elements */
+  PetscInt  remoteElements; /* contact pairs: elements whose master facet is owned by another rank */
 } SPContactStats;
 
 PETSC_EXTERN PetscErrorCode SPContactCreate(DM, SPProblem, SPContact *);
@@ -68,12 +70,14 @@ PETSC_EXTERN PetscErrorCode SPContactIsActive(SPContact, PetscBool *);
 PETSC_EXTERN PetscErrorCode SPContactGetMethod(SPContact, SPContactMethod *);
 PETSC_EXTERN PetscErrorCode SPContactAddResidual(SPContact, Vec, Vec);
 PETSC_EXTERN PetscErrorCode SPContactAddJacobian(SPContact, Vec, Mat);
+PETSC_EXTERN PetscErrorCode SPContactSetUpJacobian(SPContact, Vec, Mat, Mat);
 PETSC_EXTERN PetscErrorCode SPContactBeginSolve(SPContact, Vec);
 PETSC_EXTERN PetscErrorCode SPContactNewtonUpdate(SPContact, Vec, PetscBool *);
 PETSC_EXTERN PetscErrorCode SPContactLimitStep(SPContact, Vec, Vec, Vec, PetscBool *);
 PETSC_EXTERN PetscErrorCode SPContactAugment(SPContact, Vec, PetscBool *);
 PETSC_EXTERN PetscErrorCode SPContactConverged(SPContact, PetscBool *);
 PETSC_EXTERN PetscErrorCode SPContactGetStats(SPContact, SPContactStats *);
+PETSC_EXTERN PetscErrorCode SPContactReportStep(SPContact, Vec, PetscInt, PetscReal);
 PETSC_EXTERN PetscErrorCode SPContactSaveState(SPContact);
 PETSC_EXTERN PetscErrorCode SPContactRestoreState(SPContact);
 PETSC_EXTERN PetscErrorCode SPContactGetFields(SPContact, Vec, Vec, Vec, Vec, Vec);

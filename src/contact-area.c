@@ -43,7 +43,7 @@ static void FacetWeights(PetscInt dim, PetscInt nv, const PetscReal x[], PetscRe
 }
 
 /* Vertices (in closure order) and coordinates of facet f */
-static PetscErrorCode FacetVertices(DM dm, PetscInt f, PetscInt *nv, PetscInt vert[], PetscReal x[])
+PetscErrorCode SPContactFacetVertices(DM dm, PetscInt f, PetscInt *nv, PetscInt vert[], PetscReal x[])
 {
   PetscInt          *cl = NULL, ncl, vStart, vEnd, dim;
   Vec                coords;
@@ -72,11 +72,36 @@ static PetscErrorCode FacetVertices(DM dm, PetscInt f, PetscInt *nv, PetscInt ve
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The local facets of every slave surface (obstacle slaves and each pair's slave), each once */
+static PetscErrorCode SlaveFacets(SPContact c, PetscInt *nf, PetscInt **facets)
+{
+  PetscInt  n = 0, *all = NULL;
+
+  PetscFunctionBeginUser;
+  for (PetscInt k = -1; k < c->npair; ++k) {
+    PetscInt nk = 0, *fk = NULL, *tmp;
+    if (k < 0 && !c->nob) continue;
+    if (k < 0) PetscCall(SPMeshGetLabelFacets(c->dm, c->label, c->nvalues, c->values, &nk, &fk));
+    else PetscCall(SPMeshGetLabelFacets(c->dm, c->pair[k].label, c->pair[k].nslave, c->pair[k].slave, &nk, &fk));
+    PetscCall(PetscMalloc1(n + nk + 1, &tmp));
+    if (n) PetscCall(PetscArraycpy(tmp, all, n));
+    if (nk) PetscCall(PetscArraycpy(tmp + n, fk, nk));
+    n += nk;
+    PetscCall(PetscFree(all));
+    PetscCall(PetscFree(fk));
+    all = tmp;
+  }
+  PetscCall(PetscSortRemoveDupsInt(&n, all));
+  *nf     = n;
+  *facets = all;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* Sum facet contributions into local vectors (area, facet measure, facet count), then to owners */
 static PetscErrorCode AccumulateFacets(SPContact c, Vec area, Vec meas, Vec count)
 {
   PetscSection ls;
-  PetscInt     nf, *facets;
+  PetscInt     nf = 0, *facets = NULL;
   Vec          la, lm, lc;
   PetscScalar *pa, *pm, *pc;
 
@@ -91,11 +116,11 @@ static PetscErrorCode AccumulateFacets(SPContact c, Vec area, Vec meas, Vec coun
   PetscCall(VecGetArray(la, &pa));
   PetscCall(VecGetArray(lm, &pm));
   PetscCall(VecGetArray(lc, &pc));
-  PetscCall(SPMeshGetLabelFacets(c->dm, c->label, c->nvalues, c->values, &nf, &facets));
+  PetscCall(SlaveFacets(c, &nf, &facets));
   for (PetscInt k = 0; k < nf; ++k) {
     PetscInt  nv = 0, vert[4], off;
     PetscReal x[12], w[4], m;
-    PetscCall(FacetVertices(c->dm, facets[k], &nv, vert, x));
+    PetscCall(SPContactFacetVertices(c->dm, facets[k], &nv, vert, x));
     FacetWeights(c->dim, nv, x, w, &m);
     for (PetscInt a = 0; a < nv; ++a) {
       PetscCall(PetscSectionGetOffset(ls, vert[a], &off));

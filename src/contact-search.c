@@ -1,5 +1,6 @@
-/* Contact search against rigid obstacles: for each contact point, the deformed position x = X + u,
-   the closest (most penetrating) obstacle, its signed gap, normal and curvature term. */
+/* Contact search: for each contact point, the deformed position x = X + u and its contact element:
+   the closest master facet of its pairs (contact-pairs.c) or the most penetrating rigid obstacle,
+   whichever gives the smaller gap; the element's gap, normal, dg/du and d2g/du2. */
 #include <spcontact-impl.h>
 
 /* Displacement dofs of contact point i in the local vector */
@@ -15,15 +16,9 @@ PetscErrorCode SPContactPointDofs(SPContact c, PetscInt i, PetscInt dofs[])
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Gap g, normal n and d2g/du2 of point i at the local displacement array u */
-static PetscErrorCode PointGap(SPContact c, PetscInt i, const PetscScalar u[], PetscReal load, PetscReal *g, PetscReal n[], PetscReal Hg[])
+/* The most penetrating obstacle at x: gap, normal, curvature term */
+static void ObstacleGap(SPContact c, PetscReal load, const PetscReal x[], PetscReal *g, PetscReal n[], PetscReal Hg[])
 {
-  PetscInt  dofs[3];
-  PetscReal x[3] = {0, 0, 0};
-
-  PetscFunctionBeginUser;
-  PetscCall(SPContactPointDofs(c, i, dofs));
-  for (PetscInt d = 0; d < c->dim; ++d) x[d] = c->coord[i * c->dim + d] + PetscRealPart(u[dofs[d]]);
   *g = PETSC_MAX_REAL;
   for (PetscInt k = 0; k < c->nob; ++k) {
     PetscReal gk, nk[3], Hk[9];
@@ -34,10 +29,10 @@ static PetscErrorCode PointGap(SPContact c, PetscInt i, const PetscScalar u[], P
       for (PetscInt d = 0; d < c->dim * c->dim; ++d) Hg[d] = Hk[d];
     }
   }
-  PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Gaps and normals of every point at the local displacement locX; Hg (n*dim*dim) if wanted */
+/* Gaps, normals and contact elements of every point at the local displacement locX.
+   Collective when there are contact pairs (the master geometry is exchanged). */
 PetscErrorCode SPContactEvaluate(SPContact c, Vec locX)
 {
   const PetscScalar *u;
@@ -46,19 +41,72 @@ PetscErrorCode SPContactEvaluate(SPContact c, Vec locX)
   PetscFunctionBeginUser;
   PetscCall(SPProblemGetLoadFactor(c->problem, &load));
   PetscCall(VecGetArrayRead(locX, &u));
-  for (PetscInt i = 0; i < c->n; ++i) PetscCall(PointGap(c, i, u, load, &c->gap[i], &c->normal[i * c->dim], Hg));
+  for (PetscInt i = 0; i < c->n; ++i) {
+    PetscInt dofs[3];
+    PetscCall(SPContactPointDofs(c, i, dofs));
+    for (PetscInt d = 0; d < c->dim; ++d) c->xs[i * c->dim + d] = c->coord[i * c->dim + d] + PetscRealPart(u[dofs[d]]);
+  }
+  if (c->npair) PetscCall(SPContactPairsExchange(c, u));
+  for (PetscInt i = 0; i < c->n; ++i) {
+    PetscReal *x = &c->xs[i * c->dim], *n = &c->normal[i * c->dim];
+    for (PetscInt d = 0; d < c->dim; ++d) n[d] = 0.0;
+    c->gap[i]   = PETSC_MAX_REAL;
+    c->facet[i] = SP_ELEM_NONE;
+    if (c->pairMask[i]) PetscCall(SPContactPairsProject(c, i, &c->facet[i], &c->xi[i], &c->gap[i], n));
+    if (c->onObstacle[i]) {
+      PetscReal g, no[3];
+      ObstacleGap(c, load, x, &g, no, Hg);
+      if (g < c->gap[i]) {
+        c->gap[i]   = g;
+        c->facet[i] = SP_ELEM_OBSTACLE;
+        for (PetscInt d = 0; d < c->dim; ++d) n[d] = no[d];
+      }
+    }
+  }
   PetscCall(VecRestoreArrayRead(locX, &u));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Residual (r, dim) and tangent (K, dim x dim) of point i at local displacement u with shift s */
-PetscErrorCode SPContactPointLaw(SPContact c, PetscInt i, const PetscScalar u[], PetscReal s, PetscReal r[], PetscReal K[])
+/* Whether the pair tangent includes the second variation of the gap (projection and normal
+   variation). With penetrations of the order of the element size (the first iterations of a
+   load-controlled start) that part is strongly indefinite (about alpha E g/L against the bulk's E)
+   and Newton wanders; near a solution it gives quadratic convergence. auto: included once the
+   active set did not change in the last iteration. */
+PetscBool SPContactPairGeometricTangent(SPContact c)
 {
-  PetscReal load, g, n[3], Hg[9];
+  if (c->pairTangent == SP_PAIR_TANGENT_FULL) return PETSC_TRUE;
+  if (c->pairTangent == SP_PAIR_TANGENT_FROZEN) return PETSC_FALSE;
+  return c->stats.activeChanged == 0 ? PETSC_TRUE : PETSC_FALSE;
+}
+
+/* Contact element of point i at the last evaluated state: *nd dofs (global indices, constrained
+   ones negative), effective area A, gap g, N = dg/du and Hg = d2g/du2. *nd = 0: no element. */
+PetscErrorCode SPContactPointElement(SPContact c, PetscInt i, PetscInt *nd, PetscInt dofs[], PetscReal *A, PetscReal *g, PetscReal N[], PetscReal Hg[])
+{
+  const PetscInt   dim = c->dim;
+  const PetscReal *x   = &c->xs[i * dim];
 
   PetscFunctionBeginUser;
-  PetscCall(SPProblemGetLoadFactor(c->problem, &load));
-  PetscCall(PointGap(c, i, u, load, &g, n, Hg));
-  SPContactLawPoint(c->dim, c->area[i], c->eps[i], g, s, n, Hg, r, K);
+  *nd = 0;
+  *g  = c->gap[i];
+  *A  = c->area[i];
+  if (c->facet[i] == SP_ELEM_NONE) PetscFunctionReturn(PETSC_SUCCESS);
+  for (PetscInt d = 0; d < dim; ++d) dofs[d] = c->sdof[i * dim + d];
+  if (c->facet[i] == SP_ELEM_OBSTACLE) {
+    PetscReal load, H[9];
+    PetscCall(SPProblemGetLoadFactor(c->problem, &load));
+    ObstacleGap(c, load, x, g, N, Hg ? Hg : H);
+    *nd = dim;
+  } else {
+    const SPMasterFacet *f = &c->mf[c->facet[i]];
+    PetscReal            n[3], xi;
+    PetscCheck(dim == 2 && f->nv == 2, PETSC_COMM_SELF, PETSC_ERR_SUP, "contact pairs: only 2D node-to-segment is implemented");
+    SPSegmentGap(x, &f->x[0], &f->x[2], g, n, &xi, N, Hg);
+    if (Hg && !SPContactPairGeometricTangent(c))
+      for (PetscInt k = 0; k < 36; ++k) Hg[k] = 0.0;
+    for (PetscInt k = 0; k < f->nv * dim; ++k) dofs[dim + k] = f->dof[k];
+    *nd = dim * (1 + f->nv);
+    if (c->twoPass) *A *= 0.5; /* two-pass: each pass carries half of the point's area */
+  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -222,8 +222,10 @@ PetscErrorCode SPContactRestoreState(SPContact c)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Resultant contact force on the body, peak pressure, and the extent of the pressure zone
-   measured from the peak point (reference coordinates). Uses the last evaluated gaps. */
+/* Resultant contact force on the slave bodies (points of obstacle slaves and of the user's pairs'
+   slave surfaces: with two passes it includes the force they receive as masters), peak recovered
+   pressure, and the extent of the pressure zone measured from the peak point (reference
+   coordinates). Uses the last evaluated state; collective. */
 PetscErrorCode SPContactComputeStats(SPContact c, const PetscScalar s[])
 {
   MPI_Comm  comm = PetscObjectComm((PetscObject)c->dm);
@@ -233,9 +235,11 @@ PetscErrorCode SPContactComputeStats(SPContact c, const PetscScalar s[])
 
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  PetscCall(SPContactRecoverForces(c, s));
   for (PetscInt i = 0; i < c->n; ++i) {
-    const PetscReal p = SPContactLawPressure(c->gap[i], PetscRealPart(s[i]), c->eps[i]);
-    for (PetscInt d = 0; d < c->dim; ++d) f[d] += c->area[i] * p * c->normal[i * c->dim + d];
+    const PetscReal p = c->press[i];
+    if (c->primary[i])
+      for (PetscInt d = 0; d < c->dim; ++d) f[d] += c->fpt[i * c->dim + d];
     if (p > peak[0]) peak[0] = p, ipeak = i;
   }
   PetscCallMPI(MPI_Allreduce(f, c->stats.force, 3, MPIU_REAL, MPI_SUM, comm));
@@ -246,7 +250,7 @@ PetscErrorCode SPContactComputeStats(SPContact c, const PetscScalar s[])
   PetscCallMPI(MPI_Bcast(xp, 3, MPIU_REAL, (PetscMPIInt)gpeak[1], comm));
   for (PetscInt i = 0; i < c->n; ++i) {
     PetscReal dx[3] = {0, 0, 0};
-    if (SPContactLawPressure(c->gap[i], PetscRealPart(s[i]), c->eps[i]) <= 0.0) continue;
+    if (c->press[i] <= 0.0) continue;
     for (PetscInt d = 0; d < c->dim; ++d) dx[d] = c->coord[i * c->dim + d] - xp[d];
     rmax = PetscMax(rmax, SPNorm(c->dim, dx));
   }
@@ -264,5 +268,28 @@ PetscErrorCode SPContactGetStats(SPContact c, SPContactStats *stats)
   PetscCall(SPContactComputeStats(c, s));
   PetscCall(VecRestoreArrayRead(c->shift, &s));
   *stats = c->stats;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Contact pairs: one line per converged load step (force on the slave and on the master
+   surfaces, max penetration, peak pressure), so load paths (sliding) can be checked step by step */
+PetscErrorCode SPContactReportStep(SPContact c, Vec X, PetscInt step, PetscReal load)
+{
+  const PetscScalar *s;
+  Vec                locX;
+  PetscReal          pen = 0.0, all;
+
+  PetscFunctionBeginUser;
+  if (!c->enabled || !c->npair) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(SPProblemGetLocalState(c->problem, X, &locX));
+  PetscCall(SPContactEvaluate(c, locX));
+  PetscCall(SPProblemRestoreLocalState(c->problem, &locX));
+  PetscCall(VecGetArrayRead(c->shift, &s));
+  PetscCall(SPContactComputeStats(c, s));
+  PetscCall(VecRestoreArrayRead(c->shift, &s));
+  for (PetscInt i = 0; i < c->n; ++i)
+    if (c->facet[i] != SP_ELEM_NONE) pen = PetscMax(pen, -c->gap[i]);
+  PetscCallMPI(MPI_Allreduce(&pen, &all, 1, MPIU_REAL, MPI_MAX, PetscObjectComm((PetscObject)c->dm)));
+  PetscCall(PetscPrintf(PetscObjectComm((PetscObject)c->dm), "contact_step %" PetscInt_FMT " load %.6f force %.12e %.12e master_force %.12e %.12e max_penetration %.6e peak_pressure %.10e\n", step, (double)load, (double)c->stats.force[0], (double)c->stats.force[1], (double)c->stats.forceMaster[0], (double)c->stats.forceMaster[1], (double)all, (double)c->stats.peakPressure));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -96,9 +96,10 @@ PetscErrorCode SPContactSetFromOptions(SPContact c)
     if (!has) break;
     PetscCall(ObstacleSetFromOptions(comm, c->nob, c->dim, &c->ob[c->nob]));
   }
-  c->enabled = c->nob > 0 ? PETSC_TRUE : PETSC_FALSE;
-  PetscCheck(c->enabled || !setValues, comm, PETSC_ERR_USER_INPUT, "-contact_values given but no obstacle: add -contact_obstacle_0_type plane|sphere|cylinder");
-  PetscCheck(!c->enabled || setValues, comm, PETSC_ERR_USER_INPUT, "contact obstacle given but no slave boundary: add -contact_values <label values> (and -contact_label)");
+  PetscCall(SPContactPairsSetFromOptions(c));
+  c->enabled = c->nob > 0 || c->npair > 0 ? PETSC_TRUE : PETSC_FALSE;
+  PetscCheck(c->nob > 0 || !setValues, comm, PETSC_ERR_USER_INPUT, "-contact_values given but no obstacle: add -contact_obstacle_0_type plane|sphere|cylinder (deformable bodies: -contact_pair_0_slave_values/-contact_pair_0_master_values)");
+  PetscCheck(c->nob == 0 || setValues, comm, PETSC_ERR_USER_INPUT, "contact obstacle given but no slave boundary: add -contact_values <label values> (and -contact_label)");
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -160,6 +161,9 @@ static PetscErrorCode CollectPoints(SPContact c)
   PetscCall(PetscCalloc2(c->n, &c->h, c->n, &c->gapStart));
   PetscCall(PetscCalloc5(c->n * c->dim, &c->normal, c->n, &c->active, c->n, &c->activePrev, c->n, &c->inactiveCount, c->n, &c->nhist));
   PetscCall(PetscCalloc2(c->n * c->regM, &c->histS, c->n * c->regM, &c->histG));
+  PetscCall(PetscCalloc5(c->n * c->dim, &c->sdof, c->n, &c->pairMask, c->n, &c->onObstacle, c->n, &c->primary, c->n, &c->facet));
+  PetscCall(PetscCalloc5(c->n, &c->xi, c->n * c->dim, &c->xs, c->n, &c->press, c->n * c->dim, &c->fpt, c->n * SP_KNOWN_FACETS, &c->known));
+  for (PetscInt i = 0; i < c->n * SP_KNOWN_FACETS; ++i) c->known[i] = -1;
   PetscCall(DMGetCoordinatesLocal(c->dm, &coords));
   PetscCall(DMGetCoordinateSection(c->dm, &cs));
   PetscCall(VecGetArrayRead(coords, &ca));
@@ -177,21 +181,81 @@ static PetscErrorCode CollectPoints(SPContact c)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Which slave sets each point belongs to: the obstacles' and each pair's (bit k of pairMask) */
+static PetscErrorCode MarkPoints(SPContact c)
+{
+  DMLabel lab;
+
+  PetscFunctionBeginUser;
+  if (c->nob) {
+    PetscCall(SPMeshCreateCompletedLabel(c->dm, c->label, c->nvalues, c->values, "spcontact_obstacle_slave", &lab));
+    for (PetscInt i = 0; i < c->n; ++i) {
+      PetscInt val;
+      PetscCall(DMLabelGetValue(lab, c->vertex[i], &val));
+      c->onObstacle[i] = c->primary[i] = val == 1 ? PETSC_TRUE : PETSC_FALSE;
+    }
+    PetscCall(DMRemoveLabel(c->dm, "spcontact_obstacle_slave", NULL));
+  }
+  for (PetscInt k = 0; k < c->npair; ++k) {
+    const SPPair *p = &c->pair[k];
+    PetscCall(SPMeshCreateCompletedLabel(c->dm, p->label, p->nslave, p->slave, "spcontact_pair_slave", &lab));
+    for (PetscInt i = 0; i < c->n; ++i) {
+      PetscInt val;
+      PetscCall(DMLabelGetValue(lab, c->vertex[i], &val));
+      if (val != 1) continue;
+      c->pairMask[i] |= (PetscInt)1 << k;
+      if (!p->mirror) c->primary[i] = PETSC_TRUE;
+    }
+    PetscCall(DMRemoveLabel(c->dm, "spcontact_pair_slave", NULL));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Global dofs of each point's vertex (constrained ones negative) */
+static PetscErrorCode PointGlobalDofs(SPContact c)
+{
+  PetscSection ls, gs;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMGetLocalSection(c->dm, &ls));
+  PetscCall(DMGetGlobalSection(c->dm, &gs));
+  for (PetscInt i = 0; i < c->n; ++i) {
+    PetscInt *idx = NULL, nidx;
+    PetscCall(DMPlexGetClosureIndices(c->dm, ls, gs, c->vertex[i], PETSC_TRUE, &nidx, &idx, NULL, NULL));
+    PetscCheck(nidx == c->dim, PETSC_COMM_SELF, PETSC_ERR_PLIB, "vertex with %" PetscInt_FMT " dofs", nidx);
+    for (PetscInt d = 0; d < c->dim; ++d) c->sdof[i * c->dim + d] = idx[d];
+    PetscCall(DMPlexRestoreClosureIndices(c->dm, ls, gs, c->vertex[i], PETSC_TRUE, &nidx, &idx, NULL, NULL));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode SPContactSetUp(SPContact c)
 {
   MPI_Comm comm = PetscObjectComm((PetscObject)c->dm);
-  DMLabel  slave;
+  DMLabel  slave = NULL;
   PetscInt degree, nAll;
 
   PetscFunctionBeginUser;
   if (!c->enabled) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(SPProblemGetDegree(c->problem, &degree));
   PetscCheck(degree == 1, comm, PETSC_ERR_USER_INPUT, "contact needs first-order elements (P1/Q1); -petscspace_degree %" PetscInt_FMT " is not supported with contact (vertex contact points with lumped areas are not sound for higher orders)", degree);
-  PetscCall(SPMeshCheckLabel(c->dm, c->label, c->nvalues, c->values, "-contact_values"));
-  PetscCall(SPMeshCreateCompletedLabel(c->dm, c->label, c->nvalues, c->values, "spcontact_slave", &slave));
+  if (c->nob) {
+    PetscCall(SPMeshCheckLabel(c->dm, c->label, c->nvalues, c->values, "-contact_values"));
+    PetscCall(SPMeshCreateCompletedLabel(c->dm, c->label, c->nvalues, c->values, "spcontact_slave", &slave));
+  }
+  PetscCall(SPContactPairsCheckLabels(c));
+  for (PetscInt k = 0; k < c->npair; ++k) /* the union of every slave surface */
+    PetscCall(SPMeshCreateCompletedLabel(c->dm, c->pair[k].label, c->pair[k].nslave, c->pair[k].slave, "spcontact_slave", &slave));
   PetscCall(CreatePointDM(c, slave));
   PetscCall(CollectPoints(c));
+  PetscCall(MarkPoints(c));
+  PetscCall(PointGlobalDofs(c));
   PetscCall(SPContactComputeAreas(c));
+  PetscCall(DMCreateGlobalVector(c->dm, &c->Fc));
+  PetscCall(VecCreateMPI(comm, c->n * c->dim, PETSC_DETERMINE, &c->fvec));
+  PetscCall(VecSetOption(c->fvec, VEC_IGNORE_NEGATIVE_INDICES, PETSC_TRUE));
+  PetscCall(VecSetOption(c->Fc, VEC_IGNORE_NEGATIVE_INDICES, PETSC_TRUE));
+  PetscCall(SPContactPairsSetUp(c));
   PetscCall(VecGetSize(c->shift, &nAll));
   PetscCheck(nAll > 0, comm, PETSC_ERR_USER_INPUT, "-contact_values: the slave boundary has no vertices");
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -211,6 +275,9 @@ PetscErrorCode SPContactGetFields(SPContact c, Vec X, Vec pressure, Vec gap, Vec
   PetscCall(SPProblemGetLocalState(c->problem, X, &locX));
   PetscCall(SPContactEvaluate(c, locX));
   PetscCall(SPProblemRestoreLocalState(c->problem, &locX));
+  PetscCall(VecGetArrayRead(c->shift, &s));
+  PetscCall(SPContactRecoverForces(c, s));
+  PetscCall(VecRestoreArrayRead(c->shift, &s));
   PetscCall(VecGetDM(pressure, &dmS));
   PetscCall(DMGetGlobalSection(dmS, &gs));
   PetscCall(VecGetOwnershipRange(pressure, &rstart, NULL));
@@ -227,7 +294,7 @@ PetscErrorCode SPContactGetFields(SPContact c, Vec X, Vec pressure, Vec gap, Vec
     PetscInt off;
     PetscCall(PetscSectionGetOffset(gs, c->vertex[i], &off));
     off -= rstart;
-    p[off]  = SPContactLawPressure(c->gap[i], PetscRealPart(s[i]), c->eps[i]);
+    p[off]  = c->press[i];
     g[off]  = c->gap[i];
     sh[off] = s[i];
     a[off]  = c->active[i] ? 1.0 : 0.0;
@@ -258,6 +325,7 @@ PetscErrorCode SPContactWritePoints(SPContact c, Vec X, const char file[])
   PetscCall(SPProblemRestoreLocalState(c->problem, &locX));
   PetscCall(PetscCalloc1(c->n * nc + 1, &row));
   PetscCall(VecGetArrayRead(c->shift, &s));
+  PetscCall(SPContactRecoverForces(c, s));
   for (PetscInt i = 0; i < c->n; ++i) {
     PetscReal *r = &row[i * nc];
     for (PetscInt d = 0; d < c->dim; ++d) r[d] = c->coord[i * c->dim + d];
@@ -265,7 +333,7 @@ PetscErrorCode SPContactWritePoints(SPContact c, Vec X, const char file[])
     r[4] = c->eps[i];
     r[5] = c->gap[i];
     r[6] = PetscRealPart(s[i]);
-    r[7] = SPContactLawPressure(c->gap[i], r[6], c->eps[i]);
+    r[7] = c->press[i];
     r[8] = c->active[i];
   }
   PetscCall(VecRestoreArrayRead(c->shift, &s));
@@ -307,6 +375,24 @@ PetscErrorCode SPContactView(SPContact c, PetscViewer v)
   PetscCall(PetscViewerASCIIPrintf(v, "contact_method %s\n", c->entry->name));
   PetscCall(PetscViewerASCIIPrintf(v, "contact_points %" PetscInt_FMT "\n", nAll));
   PetscCall(PetscViewerASCIIPrintf(v, "contact_obstacles %" PetscInt_FMT "\n", c->nob));
+  PetscCall(PetscViewerASCIIPrintf(v, "contact_pairs %" PetscInt_FMT "\ncontact_two_pass %s\n", c->nuser, c->twoPass ? "yes" : "no"));
+  PetscCall(PetscViewerASCIIPrintf(v, "contact_master_facets %" PetscInt_FMT "\n", c->nmfAll));
+  {
+    PetscInt64     rec;
+    PetscLogDouble tmax;
+    PetscMPIInt    size;
+    PetscCallMPI(MPI_Comm_size(PetscObjectComm((PetscObject)c->dm), &size));
+    PetscCallMPI(MPI_Allreduce(&c->received, &rec, 1, MPIU_INT64, MPI_SUM, PetscObjectComm((PetscObject)c->dm)));
+    PetscCallMPI(MPI_Allreduce(&c->exchangeTime, &tmax, 1, MPI_DOUBLE, MPI_MAX, PetscObjectComm((PetscObject)c->dm)));
+    PetscCall(PetscViewerASCIIPrintf(v, "contact_exchanges %" PetscInt_FMT "\ncontact_exchange_time %.6f\n", c->exchanges, (double)tmax));
+    PetscCall(PetscViewerASCIIPrintf(v, "contact_exchange_facets_per_rank %.1f\n", c->exchanges ? (double)rec / (double)(c->exchanges * size) : 0.0));
+  }
+  PetscCall(PetscViewerASCIIPrintf(v, "contact_pattern_rebuilds %" PetscInt_FMT "\n", c->rebuilds));
+  if (c->npair) { /* mallocs during MatSetValues on the Jacobian (0: the preallocation held) */
+    MatInfo info;
+    PetscCall(MatGetInfo(c->Jref, MAT_GLOBAL_SUM, &info));
+    PetscCall(PetscViewerASCIIPrintf(v, "contact_jacobian_mallocs %g\n", (double)info.mallocs));
+  }
   PetscCall(PetscViewerASCIIPrintf(v, "contact_alpha %g\n", c->penalty > 0.0 ? 0.0 : (double)c->alpha));
   PetscCall(PetscViewerASCIIPrintf(v, "contact_eps_min %.10e\ncontact_eps_max %.10e\n", (double)gmin, (double)gmax));
   PetscCall(PetscViewerASCIIPrintf(v, "contact_gap_tol %g\n", (double)c->gapTol));
@@ -328,7 +414,12 @@ PetscErrorCode SPContactDestroy(SPContact *contact)
     PetscCall(PetscFree5(c->normal, c->active, c->activePrev, c->inactiveCount, c->nhist));
     PetscCall(PetscFree2(c->histS, c->histG));
     PetscCall(PetscFree2(c->h, c->gapStart));
+    PetscCall(PetscFree5(c->sdof, c->pairMask, c->onObstacle, c->primary, c->facet));
+    PetscCall(PetscFree5(c->xi, c->xs, c->press, c->fpt, c->known));
   }
+  PetscCall(VecDestroy(&c->Fc));
+  PetscCall(VecDestroy(&c->fvec));
+  PetscCall(SPContactPairsDestroy(c));
   PetscCall(PetscFree(*contact));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

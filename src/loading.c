@@ -53,6 +53,7 @@ PetscErrorCode SPLoadingRun(SPApp app)
     step++;
     cuts = 0;
     PetscCall(SPOutputWriteStep(app->output, app->problem, app->u, app->contact));
+    PetscCall(SPContactReportStep(app->contact, app->u, step, load));
   }
   app->stepsDone   = step;
   app->loadReached = done;

@@ -99,6 +99,7 @@ static PetscErrorCode FormJacobian(SNES snes, Vec X, Mat J, Mat P, void *ctx)
 
   PetscFunctionBeginUser;
   PetscCall(SPProblemGetLocalState(s->problem, X, &locX));
+  PetscCall(SPContactSetUpJacobian(s->contact, locX, P, s->K)); /* contact-pair couplings in the pattern of P (and K) */
   if (s->reuse) {
     PetscCall(LinearParts(s));
     PetscCall(PetscLogEventBegin(s->log->bulkJacobian, 0, 0, 0, 0));

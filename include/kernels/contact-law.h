@@ -57,14 +57,16 @@ static inline void SPObstacleGap(const SPObstacle *ob, PetscInt dim, PetscReal l
       for (PetscInt j = 0; j < dim; ++j) Hg[i * dim + j] = (P[i * dim + j] - n[i] * n[j]) / r;
 }
 
-/* Residual (dim) and tangent (dim x dim) of one contact point of area A. */
-static inline void SPContactLawPoint(PetscInt dim, PetscReal A, PetscReal eps, PetscReal g, PetscReal s, const PetscReal n[], const PetscReal Hg[], PetscReal r[], PetscReal K[])
+/* Residual (nd) and tangent (nd x nd) of one contact element of area A: the dofs it touches are
+   the slave vertex (and, for a contact pair, the master facet's vertices); N = dg/du (nd) and
+   Hg = d2g/du2 (nd x nd). Against a rigid obstacle nd = dim and N = n. */
+static inline void SPContactLawElement(PetscInt nd, PetscReal A, PetscReal eps, PetscReal g, PetscReal s, const PetscReal N[], const PetscReal Hg[], PetscReal r[], PetscReal K[])
 {
   const PetscReal m = PetscMin(0.0, g + s), h = SPContactLawActive(g, s) ? 1.0 : 0.0;
-  for (PetscInt i = 0; i < dim; ++i) {
-    if (r) r[i] = A * eps * m * n[i];
+  for (PetscInt i = 0; i < nd; ++i) {
+    if (r) r[i] = A * eps * m * N[i];
     if (K)
-      for (PetscInt j = 0; j < dim; ++j) K[i * dim + j] = A * eps * (h * n[i] * n[j] + m * Hg[i * dim + j]);
+      for (PetscInt j = 0; j < nd; ++j) K[i * nd + j] = A * eps * (h * N[i] * N[j] + m * Hg[i * nd + j]);
   }
 }
 #endif

@@ -1,0 +1,431 @@
+/* Contact pairs (deformable-deformable contact, 2D node-to-segment): pair options, the master
+   facet table, its exchange between ranks at every evaluation, and the closest-point search.
+
+   Exchange: every rank owns the master facets of its part. At every evaluation the ranks share
+   their slave bounding boxes (deformed, inflated by twice the largest slave/master facet size),
+   and each rank sends its owned master facets (deformed coordinates, global dofs, contact-point
+   numbers) to the ranks whose box they meet (MPI_Alltoallv). -contact_pair_exchange_all sends to
+   every rank (the whole-surface gather, for comparison). The cost is printed in the summary
+   (contact_exchange_time, contact_exchange_facets_per_rank). The free ends of the master
+   surfaces come from a one-time gather of the whole table at set-up.
+
+   Projection rule (documented in the README): among the master segments of the point's pairs, the
+   one whose closest point (parameter clamped to [0,1]) is nearest wins; on a tie (a shared
+   vertex) the segment whose unclamped parameter lies inside [0,1], or is closer to it, wins, then
+   the segment with the lexicographically smaller reference midpoint (independent of the
+   partition). The gap and normal come from the winning segment with the UNCLAMPED parameter
+   (an extended segment), which keeps g continuous across a flat junction and makes the dead zone
+   at a convex corner belong to one segment. A projection beyond a free end of the master surface
+   (a vertex of one master segment only) by more than SP_PAIR_END_TOL of the segment length is off
+   the surface: the point has no contact element. */
+#include <spcontact-impl.h>
+
+#define SP_PAIR_END_TOL 1e-2
+
+static const char *const PairTangents[] = {"auto", "full", "frozen", "SPPairTangent", "SP_PAIR_TANGENT_", NULL};
+
+static PetscErrorCode PairSetFromOptions(MPI_Comm comm, PetscInt k, SPPair *p, PetscBool *found)
+{
+  char      prefix[48];
+  PetscBool hasS, hasM, hasL;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscSNPrintf(prefix, sizeof(prefix), "contact_pair_%" PetscInt_FMT "_", k));
+  PetscCall(PetscMemzero(p, sizeof(*p)));
+  PetscCall(PetscStrcpy(p->label, "Face Sets"));
+  p->nslave = p->nmaster = SP_MAX_VALUES;
+  PetscOptionsBegin(comm, prefix, "Contact pair (deformable-deformable, node-to-segment)", "spcontact");
+  PetscCall(PetscOptionsString("-label", "Mesh label of the pair's two surfaces", "SPContactPairsSetFromOptions", p->label, p->label, sizeof(p->label), &hasL));
+  PetscCall(PetscOptionsIntArray("-slave_values", "Label values of the slave surface (its vertices are contact points)", "SPContactPairsSetFromOptions", p->slave, &p->nslave, &hasS));
+  PetscCall(PetscOptionsIntArray("-master_values", "Label values of the master surface (its facets are projected on)", "SPContactPairsSetFromOptions", p->master, &p->nmaster, &hasM));
+  PetscOptionsEnd();
+  if (!hasS) p->nslave = 0;
+  if (!hasM) p->nmaster = 0;
+  *found = hasS || hasM || hasL ? PETSC_TRUE : PETSC_FALSE;
+  if (!*found) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCheck(p->nslave > 0, comm, PETSC_ERR_USER_INPUT, "contact pair %" PetscInt_FMT ": no slave surface, add -%sslave_values <label values>", k, prefix);
+  PetscCheck(p->nmaster > 0, comm, PETSC_ERR_USER_INPUT, "contact pair %" PetscInt_FMT ": no master surface, add -%smaster_values <label values>", k, prefix);
+  for (PetscInt a = 0; a < p->nslave; ++a)
+    for (PetscInt b = 0; b < p->nmaster; ++b) PetscCheck(p->slave[a] != p->master[b], comm, PETSC_ERR_USER_INPUT, "contact pair %" PetscInt_FMT ": label value %" PetscInt_FMT " is both slave and master (self-contact is not supported)", k, p->slave[a]);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode SPContactPairsSetFromOptions(SPContact c)
+{
+  MPI_Comm  comm = PetscObjectComm((PetscObject)c->dm);
+  PetscBool found   = PETSC_TRUE;
+  PetscInt  tangent = (PetscInt)c->pairTangent;
+
+  PetscFunctionBeginUser;
+  PetscOptionsBegin(comm, NULL, "Contact pairs", "spcontact");
+  PetscCall(PetscOptionsEList("-contact_pair_tangent", "Contact pairs: second variation of the gap in the tangent: auto (once the active set is settled), full (always), frozen (never)", "SPContactPairsSetFromOptions", PairTangents, 3, PairTangents[tangent], &tangent, NULL));
+  PetscCall(PetscOptionsBool("-contact_pair_exchange_all", "Contact pairs: send every master facet to every rank at each evaluation (default: only to ranks whose slave bounding box, inflated by 2 x the largest facet, they meet)", "SPContactPairsSetFromOptions", c->exchangeAll, &c->exchangeAll, NULL));
+  PetscCall(PetscOptionsBool("-contact_two_pass", "Contact pairs: each surface also acts as slave of the other (mirrored pair); each pass carries half of the areas", "SPContactPairsSetFromOptions", c->twoPass, &c->twoPass, NULL));
+  PetscOptionsEnd();
+  c->pairTangent = (SPPairTangent)tangent;
+  for (c->nuser = 0; c->nuser < SP_MAX_PAIRS; ++c->nuser) {
+    PetscCall(PairSetFromOptions(comm, c->nuser, &c->pair[c->nuser], &found));
+    if (!found) break;
+  }
+  if (found) { /* pair SP_MAX_PAIRS given? */
+    char      name[64];
+    PetscBool more;
+    PetscCall(PetscSNPrintf(name, sizeof(name), "-contact_pair_%d_slave_values", SP_MAX_PAIRS));
+    PetscCall(PetscOptionsHasName(NULL, NULL, name, &more));
+    PetscCheck(!more, comm, PETSC_ERR_USER_INPUT, "at most %d contact pairs (-contact_pair_0_ .. -contact_pair_%d_)", SP_MAX_PAIRS, SP_MAX_PAIRS - 1);
+  }
+  c->npair = c->nuser;
+  PetscCheck(c->nuser > 0 || !c->twoPass, comm, PETSC_ERR_USER_INPUT, "-contact_two_pass needs a contact pair (-contact_pair_0_slave_values, -contact_pair_0_master_values)");
+  PetscCheck(c->nuser == 0 || c->dim == 2, comm, PETSC_ERR_USER_INPUT, "contact pairs are implemented in 2D only (node-to-segment); 3D node-to-facet contact is not implemented yet: use rigid obstacles in 3D");
+  if (c->twoPass)
+    for (PetscInt k = 0; k < c->nuser; ++k) {
+      SPPair *m = &c->pair[c->npair++];
+      *m        = c->pair[k];
+      m->nslave = c->pair[k].nmaster;
+      m->nmaster = c->pair[k].nslave;
+      PetscCall(PetscArraycpy(m->slave, c->pair[k].master, m->nslave));
+      PetscCall(PetscArraycpy(m->master, c->pair[k].slave, m->nmaster));
+      m->mirror = PETSC_TRUE;
+    }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Swap the vertex order of facet f if its normal does not point away from the supporting cell */
+static PetscErrorCode OrientFacet(DM dm, PetscInt f, PetscInt dim, PetscInt nv, PetscInt vert[], PetscReal X[])
+{
+  const PetscInt *supp;
+  PetscInt        ns, cnv, cvert[8];
+  PetscReal       cx[8 * 3], xc[3] = {0, 0, 0}, g, n[3], xi, N[6];
+
+  PetscFunctionBeginUser;
+  PetscCall(DMPlexGetSupportSize(dm, f, &ns));
+  PetscCall(DMPlexGetSupport(dm, f, &supp));
+  PetscCheck(ns == 1, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "contact pairs: master facet %" PetscInt_FMT " is not on the boundary (%" PetscInt_FMT " cells)", f, ns);
+  {
+    PetscInt *cl = NULL, ncl, vStart, vEnd;
+    PetscCall(DMPlexGetDepthStratum(dm, 0, &vStart, &vEnd));
+    PetscCall(DMPlexGetTransitiveClosure(dm, supp[0], PETSC_TRUE, &ncl, &cl));
+    cnv = 0;
+    for (PetscInt p = 0; p < 2 * ncl; p += 2)
+      if (cl[p] >= vStart && cl[p] < vEnd && cnv < 8) cvert[cnv++] = cl[p];
+    PetscCall(DMPlexRestoreTransitiveClosure(dm, supp[0], PETSC_TRUE, &ncl, &cl));
+  }
+  for (PetscInt a = 0; a < cnv; ++a) {
+    PetscInt nv1, v1[4];
+    PetscCall(SPContactFacetVertices(dm, cvert[a], &nv1, v1, &cx[a * dim]));
+    for (PetscInt k = 0; k < dim; ++k) xc[k] += cx[a * dim + k] / cnv;
+  }
+  SPSegmentGap(xc, &X[0], &X[dim], &g, n, &xi, N, NULL);
+  if (g > 0.0) { /* the cell centroid lies on the normal side: reverse */
+    for (PetscInt a = 0; a < nv / 2; ++a) {
+      const PetscInt b = nv - 1 - a, tv = vert[a];
+      vert[a] = vert[b], vert[b] = tv;
+      for (PetscInt k = 0; k < dim; ++k) {
+        const PetscReal t = X[a * dim + k];
+        X[a * dim + k] = X[b * dim + k], X[b * dim + k] = t;
+      }
+    }
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Static data of this rank's owned master facets */
+static PetscErrorCode OwnedFacets(SPContact c, PetscInt *nown, SPMasterFacet **own, PetscInt **ownVert)
+{
+  const PetscInt  dim = c->dim;
+  PetscSF         sf;
+  PetscInt        nleaves, pStart, pEnd, cap = 0, n = 0;
+  const PetscInt *leaves;
+  PetscBool      *ghost;
+  PetscSection    ls, gs, gsC;
+  IS              numIS;
+  const PetscInt *num;
+  SPMasterFacet  *tab = NULL;
+  PetscInt       *tv  = NULL;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMPlexGetChart(c->dm, &pStart, &pEnd));
+  PetscCall(PetscCalloc1(pEnd - pStart, &ghost));
+  PetscCall(DMGetPointSF(c->dm, &sf));
+  PetscCall(PetscSFGetGraph(sf, NULL, &nleaves, &leaves, NULL));
+  for (PetscInt l = 0; l < (nleaves > 0 ? nleaves : 0); ++l) ghost[(leaves ? leaves[l] : l) - pStart] = PETSC_TRUE;
+  PetscCall(DMGetLocalSection(c->dm, &ls));
+  PetscCall(DMGetGlobalSection(c->dm, &gs));
+  PetscCall(DMGetGlobalSection(c->dmC, &gsC));
+  PetscCall(DMPlexCreatePointNumbering(c->dm, &numIS));
+  PetscCall(ISGetIndices(numIS, &num));
+  for (PetscInt k = 0; k < c->npair; ++k) {
+    const SPPair *p = &c->pair[k];
+    PetscInt      nf, *facets;
+    PetscCall(SPMeshGetLabelFacets(c->dm, p->label, p->nmaster, p->master, &nf, &facets));
+    if (n + nf > cap) {
+      SPMasterFacet *t;
+      PetscInt      *v;
+      cap = 2 * (n + nf);
+      PetscCall(PetscCalloc1(cap, &t));
+      PetscCall(PetscCalloc1(cap * SP_FACET_MAXV, &v));
+      if (n) PetscCall(PetscArraycpy(t, tab, n));
+      if (n) PetscCall(PetscArraycpy(v, tv, n * SP_FACET_MAXV));
+      PetscCall(PetscFree(tab));
+      PetscCall(PetscFree(tv));
+      tab = t;
+      tv  = v;
+    }
+    for (PetscInt j = 0; j < nf; ++j) {
+      SPMasterFacet *m = &tab[n];
+      PetscInt       vert[SP_FACET_MAXV];
+      if (ghost[facets[j] - pStart]) continue;
+      PetscCall(PetscMemzero(m, sizeof(*m)));
+      m->pair = k;
+      PetscCall(SPContactFacetVertices(c->dm, facets[j], &m->nv, vert, m->X));
+      PetscCall(OrientFacet(c->dm, facets[j], dim, m->nv, vert, m->X));
+      for (PetscInt a = 0; a < m->nv; ++a) {
+        PetscInt *idx = NULL, nidx, dof, off;
+        m->vid[a] = num[vert[a] - pStart] >= 0 ? num[vert[a] - pStart] : -(num[vert[a] - pStart] + 1);
+        PetscCall(DMPlexGetClosureIndices(c->dm, ls, gs, vert[a], PETSC_TRUE, &nidx, &idx, NULL, NULL));
+        for (PetscInt d = 0; d < dim; ++d) m->dof[a * dim + d] = idx[d];
+        PetscCall(DMPlexRestoreClosureIndices(c->dm, ls, gs, vert[a], PETSC_TRUE, &nidx, &idx, NULL, NULL));
+        PetscCall(PetscSectionGetDof(gsC, vert[a], &dof));
+        PetscCall(PetscSectionGetOffset(gsC, vert[a], &off));
+        m->cp[a] = dof > 0 ? off : (dof < -1 ? -(off + 1) : -1); /* global section: ghosts store -(x+1) */
+        tv[n * SP_FACET_MAXV + a] = vert[a];
+        for (PetscInt d = 0; d < dim; ++d) m->x[a * dim + d] = m->X[a * dim + d];
+      }
+      n++;
+    }
+    PetscCall(PetscFree(facets));
+  }
+  PetscCall(ISRestoreIndices(numIS, &num));
+  PetscCall(ISDestroy(&numIS));
+  PetscCall(PetscFree(ghost));
+  *nown    = n;
+  *own     = tab;
+  *ownVert = tv;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Free ends: vertices of one master facet only (within the same pair) */
+static PetscErrorCode MarkFreeEnds(SPContact c)
+{
+  PetscInt64 *key;
+  PetscInt    nk = 0;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscMalloc1(c->nmf * SP_FACET_MAXV + 1, &key));
+  for (PetscInt f = 0; f < c->nmf; ++f)
+    for (PetscInt a = 0; a < c->mf[f].nv; ++a) key[nk++] = (PetscInt64)c->mf[f].vid[a] * (2 * SP_MAX_PAIRS) + c->mf[f].pair;
+  PetscCall(PetscSortInt64(nk, key));
+  for (PetscInt f = 0; f < c->nmf; ++f)
+    for (PetscInt a = 0; a < c->mf[f].nv; ++a) {
+      const PetscInt64 k = (PetscInt64)c->mf[f].vid[a] * (2 * SP_MAX_PAIRS) + c->mf[f].pair;
+      PetscInt         lo = 0, hi = nk, cnt = 0;
+      while (lo < hi) { /* first index with key >= k */
+        const PetscInt mid = (lo + hi) / 2;
+        if (key[mid] < k) lo = mid + 1;
+        else hi = mid;
+      }
+      while (lo + cnt < nk && key[lo + cnt] == k) cnt++;
+      c->mf[f].freeEnd[a] = cnt == 1 ? PETSC_TRUE : PETSC_FALSE;
+    }
+  PetscCall(PetscFree(key));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Every pair's label and values exist and are not empty */
+PetscErrorCode SPContactPairsCheckLabels(SPContact c)
+{
+  PetscFunctionBeginUser;
+  for (PetscInt k = 0; k < c->nuser; ++k) {
+    char opt[64];
+    PetscCall(PetscSNPrintf(opt, sizeof(opt), "-contact_pair_%" PetscInt_FMT "_slave_values", k));
+    PetscCall(SPMeshCheckLabel(c->dm, c->pair[k].label, c->pair[k].nslave, c->pair[k].slave, opt));
+    PetscCall(PetscSNPrintf(opt, sizeof(opt), "-contact_pair_%" PetscInt_FMT "_master_values", k));
+    PetscCall(SPMeshCheckLabel(c->dm, c->pair[k].label, c->pair[k].nmaster, c->pair[k].master, opt));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Global facet numbers, free ends (from a one-time gather of the whole table) and the margin */
+static PetscErrorCode SetUpStatic(SPContact c)
+{
+  MPI_Comm       comm = PetscObjectComm((PetscObject)c->dm);
+  PetscMPIInt    size, rank, mine = (PetscMPIInt)c->nmfOwned, *cnt, *dsp, *cb, *db;
+  PetscReal      hmax = 0.0;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_size(comm, &size));
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  PetscCall(PetscMalloc4(size, &cnt, size + 1, &dsp, size, &cb, size, &db));
+  PetscCallMPI(MPI_Allgather(&mine, 1, MPI_INT, cnt, 1, MPI_INT, comm));
+  dsp[0] = 0;
+  for (PetscMPIInt r = 0; r < size; ++r) dsp[r + 1] = dsp[r] + cnt[r];
+  c->nmfAll  = dsp[size];
+  c->mfStart = dsp[rank];
+  PetscCheck(c->nmfAll > 0, comm, PETSC_ERR_USER_INPUT, "contact pairs: the master surfaces have no facets");
+  for (PetscInt j = 0; j < c->nmfOwned; ++j) c->own[j].gid = c->mfStart + j;
+  c->nmf = c->mfCap = c->nmfAll;
+  PetscCall(PetscCalloc1(c->mfCap, &c->mf));
+  for (PetscMPIInt r = 0; r < size; ++r) cb[r] = cnt[r] * (PetscMPIInt)sizeof(SPMasterFacet), db[r] = dsp[r] * (PetscMPIInt)sizeof(SPMasterFacet);
+  PetscCallMPI(MPI_Allgatherv(c->own, mine * (PetscMPIInt)sizeof(SPMasterFacet), MPI_BYTE, c->mf, cb, db, MPI_BYTE, comm));
+  PetscCall(MarkFreeEnds(c));
+  for (PetscInt j = 0; j < c->nmfOwned; ++j) c->own[j] = c->mf[c->mfStart + j];
+  for (PetscInt f = 0; f < c->nmf; ++f) {
+    PetscReal t[3];
+    for (PetscInt k = 0; k < c->dim; ++k) t[k] = c->mf[f].X[c->dim + k] - c->mf[f].X[k];
+    hmax = PetscMax(hmax, SPNorm(c->dim, t));
+  }
+  for (PetscInt i = 0; i < c->n; ++i) hmax = PetscMax(hmax, c->h[i]);
+  PetscCallMPI(MPI_Allreduce(&hmax, &c->margin, 1, MPIU_REAL, MPI_MAX, comm));
+  c->margin *= 2.0;
+  PetscCall(PetscFree4(cnt, dsp, cb, db));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode SPContactPairsSetUp(SPContact c)
+{
+  PetscFunctionBeginUser;
+  if (!c->npair) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(OwnedFacets(c, &c->nmfOwned, &c->own, &c->mfVert));
+  PetscCall(SetUpStatic(c));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* This rank's slave bounding box (deformed), inflated by the margin; empty: lo > hi */
+static void SlaveBox(SPContact c, PetscReal box[])
+{
+  const PetscInt dim = c->dim;
+  for (PetscInt d = 0; d < dim; ++d) box[d] = PETSC_MAX_REAL, box[dim + d] = -PETSC_MAX_REAL;
+  for (PetscInt i = 0; i < c->n; ++i) {
+    if (!c->pairMask[i]) continue;
+    for (PetscInt d = 0; d < dim; ++d) {
+      box[d]       = PetscMin(box[d], c->xs[i * dim + d] - c->margin);
+      box[dim + d] = PetscMax(box[dim + d], c->xs[i * dim + d] + c->margin);
+    }
+  }
+}
+
+static PetscBool FacetMeets(const SPMasterFacet *m, PetscInt dim, const PetscReal box[])
+{
+  for (PetscInt d = 0; d < dim; ++d) {
+    PetscReal lo = PETSC_MAX_REAL, hi = -PETSC_MAX_REAL;
+    for (PetscInt a = 0; a < m->nv; ++a) lo = PetscMin(lo, m->x[a * dim + d]), hi = PetscMax(hi, m->x[a * dim + d]);
+    if (hi < box[d] || lo > box[dim + d]) return PETSC_FALSE;
+  }
+  return PETSC_TRUE;
+}
+
+/* Deformed master geometry at the local displacement u: each rank sends its owned master facets to
+   every rank whose slave bounding box (inflated by the margin) they meet, or to every rank with
+   -contact_pair_exchange all. Needs c->xs of the current state. Collective. */
+PetscErrorCode SPContactPairsExchange(SPContact c, const PetscScalar u[])
+{
+  MPI_Comm       comm = PetscObjectComm((PetscObject)c->dm);
+  const PetscInt dim  = c->dim, sz = (PetscInt)sizeof(SPMasterFacet);
+  PetscMPIInt    size, *scnt, *sdsp, *rcnt, *rdsp;
+  PetscReal      box[6], *boxes;
+  PetscSection   ls;
+  SPMasterFacet *send;
+  PetscInt       nsend = 0, nrecv = 0;
+  PetscLogDouble t0, t1;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscTime(&t0));
+  PetscCallMPI(MPI_Comm_size(comm, &size));
+  PetscCall(DMGetLocalSection(c->dm, &ls));
+  for (PetscInt j = 0; j < c->nmfOwned; ++j) {
+    SPMasterFacet *m = &c->own[j];
+    for (PetscInt a = 0; a < m->nv; ++a) {
+      PetscInt off;
+      PetscCall(PetscSectionGetOffset(ls, c->mfVert[j * SP_FACET_MAXV + a], &off));
+      for (PetscInt d = 0; d < dim; ++d) m->x[a * dim + d] = m->X[a * dim + d] + PetscRealPart(u[off + d]);
+    }
+  }
+  SlaveBox(c, box);
+  PetscCall(PetscMalloc5(size * 2 * dim, &boxes, size, &scnt, size + 1, &sdsp, size, &rcnt, size + 1, &rdsp));
+  PetscCallMPI(MPI_Allgather(box, (PetscMPIInt)(2 * dim), MPIU_REAL, boxes, (PetscMPIInt)(2 * dim), MPIU_REAL, comm));
+  for (PetscMPIInt r = 0; r < size; ++r) {
+    scnt[r] = 0;
+    for (PetscInt j = 0; j < c->nmfOwned; ++j)
+      if (c->exchangeAll || FacetMeets(&c->own[j], dim, &boxes[r * 2 * dim])) scnt[r]++;
+    nsend += scnt[r];
+  }
+  PetscCall(PetscMalloc1(nsend + 1, &send));
+  sdsp[0] = 0;
+  for (PetscMPIInt r = 0; r < size; ++r) {
+    PetscInt k = sdsp[r];
+    for (PetscInt j = 0; j < c->nmfOwned; ++j)
+      if (c->exchangeAll || FacetMeets(&c->own[j], dim, &boxes[r * 2 * dim])) send[k++] = c->own[j];
+    sdsp[r + 1] = (PetscMPIInt)k;
+  }
+  PetscCallMPI(MPI_Alltoall(scnt, 1, MPI_INT, rcnt, 1, MPI_INT, comm));
+  rdsp[0] = 0;
+  for (PetscMPIInt r = 0; r < size; ++r) rdsp[r + 1] = rdsp[r] + rcnt[r];
+  nrecv = rdsp[size];
+  if (nrecv > c->mfCap) {
+    PetscCall(PetscFree(c->mf));
+    c->mfCap = nrecv;
+    PetscCall(PetscMalloc1(c->mfCap, &c->mf));
+  }
+  for (PetscMPIInt r = 0; r < size; ++r) scnt[r] *= (PetscMPIInt)sz, sdsp[r] *= (PetscMPIInt)sz, rcnt[r] *= (PetscMPIInt)sz, rdsp[r] *= (PetscMPIInt)sz;
+  PetscCallMPI(MPI_Alltoallv(send, scnt, sdsp, MPI_BYTE, c->mf, rcnt, rdsp, MPI_BYTE, comm));
+  c->nmf = nrecv;
+  PetscCall(PetscFree(send));
+  PetscCall(PetscFree5(boxes, scnt, sdsp, rcnt, rdsp));
+  PetscCall(PetscTime(&t1));
+  c->exchangeTime += t1 - t0;
+  c->exchanges++;
+  c->received += nrecv;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Is candidate (d, excess, facet f) better than the current best (db, eb, fb)? */
+static PetscBool Better(const SPContact c, PetscReal d, PetscReal e, PetscInt f, PetscReal db, PetscReal eb, PetscInt fb)
+{
+  const PetscReal tol = 1e-10 * (1.0 + db);
+  if (fb < 0 || d < db - tol) return PETSC_TRUE;
+  if (d > db + tol) return PETSC_FALSE;
+  if (e < eb - 1e-12) return PETSC_TRUE;
+  if (e > eb + 1e-12) return PETSC_FALSE;
+  for (PetscInt k = 0; k < c->dim; ++k) { /* reference midpoints, lexicographic */
+    const PetscReal mf = c->mf[f].X[k] + c->mf[f].X[c->dim + k], mb = c->mf[fb].X[k] + c->mf[fb].X[c->dim + k];
+    if (mf != mb) return mf < mb ? PETSC_TRUE : PETSC_FALSE;
+  }
+  return PETSC_FALSE;
+}
+
+/* Closest-point projection of point i (deformed position c->xs) onto the master facets of its
+   pairs: facet (or SP_ELEM_NONE), parameter, gap and normal (see the rule at the top) */
+PetscErrorCode SPContactPairsProject(SPContact c, PetscInt i, PetscInt *facet, PetscReal *xi, PetscReal *g, PetscReal n[])
+{
+  const PetscReal *x = &c->xs[i * c->dim];
+  PetscInt         best = -1;
+  PetscReal        db = 0.0, eb = 0.0, xb = 0.0;
+
+  PetscFunctionBeginUser;
+  *facet = SP_ELEM_NONE;
+  for (PetscInt f = 0; f < c->nmf; ++f) {
+    const SPMasterFacet *m = &c->mf[f];
+    PetscReal            t, d, e;
+    if (!(c->pairMask[i] & ((PetscInt)1 << m->pair))) continue;
+    SPSegmentProject(x, &m->x[0], &m->x[c->dim], &t, &d);
+    e = t < 0.0 ? -t : (t > 1.0 ? t - 1.0 : 0.0);
+    if (Better(c, d, e, f, db, eb, best)) best = f, db = d, eb = e, xb = t;
+  }
+  if (best < 0) PetscFunctionReturn(PETSC_SUCCESS);
+  if (eb > SP_PAIR_END_TOL && c->mf[best].freeEnd[xb < 0.0 ? 0 : c->mf[best].nv - 1]) PetscFunctionReturn(PETSC_SUCCESS);
+  {
+    PetscReal N[6];
+    SPSegmentGap(x, &c->mf[best].x[0], &c->mf[best].x[c->dim], g, n, xi, N, NULL);
+  }
+  *facet = best;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode SPContactPairsDestroy(SPContact c)
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscFree(c->mf));
+  PetscCall(PetscFree(c->own));
+  PetscCall(PetscFree(c->mfVert));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}

@@ -1,0 +1,109 @@
+/* The Jacobian's nonzero pattern with the contact-pair couplings (slave vertex <-> master facet
+   vertices, possibly on other ranks). DMCreateMatrix preallocates the bulk pattern only. Before
+   each Jacobian assembly, SPContactSetUpJacobian checks that every active pair element's block is
+   already in the pattern (each point remembers the global numbers of the master facets it was coupled to); if any is
+   missing on any rank, the pattern is rebuilt: a MATPREALLOCATOR receives the current pattern of P
+   (row by row) plus the blocks of every current pair element (active or not, to anticipate), and
+   MatPreallocatorPreallocate re-preallocates P in place and fills it with zeros. The pattern only
+   grows. K (the reused linear stiffness, if any) is given the same pattern with its values kept,
+   so the solver's MatCopy(K, P, SAME_NONZERO_PATTERN) stays valid. No new-nonzero malloc ever
+   happens during assembly (MAT_NEW_NONZERO_ALLOCATION_ERR stays on). */
+#include <spcontact-impl.h>
+
+#define SP_ELEM_MAXD (3 * (1 + SP_FACET_MAXV))
+
+static PetscBool Known(SPContact c, PetscInt i, PetscInt f)
+{
+  for (PetscInt k = 0; k < SP_KNOWN_FACETS; ++k)
+    if (c->known[i * SP_KNOWN_FACETS + k] == f) return PETSC_TRUE;
+  return PETSC_FALSE;
+}
+
+static void Remember(SPContact c, PetscInt i, PetscInt f)
+{
+  PetscInt *k = &c->known[i * SP_KNOWN_FACETS];
+  if (Known(c, i, f)) return;
+  for (PetscInt j = SP_KNOWN_FACETS - 1; j > 0; --j) k[j] = k[j - 1]; /* forget the oldest: at worst a spurious rebuild */
+  k[0] = f;
+}
+
+/* P's pattern plus the blocks of every current pair element, into P (zero filled) */
+static PetscErrorCode Rebuild(SPContact c, Mat P)
+{
+  Mat         pre;
+  PetscInt    m, n, M, N, bs, rstart, rend, maxr = SP_ELEM_MAXD * SP_ELEM_MAXD;
+  PetscScalar *zeros;
+
+  PetscFunctionBeginUser;
+  PetscCall(MatGetLocalSize(P, &m, &n));
+  PetscCall(MatGetSize(P, &M, &N));
+  PetscCall(MatGetBlockSize(P, &bs));
+  PetscCall(MatGetOwnershipRange(P, &rstart, &rend));
+  for (PetscInt r = rstart; r < rend; ++r) {
+    PetscInt nc;
+    PetscCall(MatGetRow(P, r, &nc, NULL, NULL));
+    maxr = PetscMax(maxr, nc);
+    PetscCall(MatRestoreRow(P, r, &nc, NULL, NULL));
+  }
+  PetscCall(PetscCalloc1(maxr, &zeros));
+  PetscCall(MatCreate(PetscObjectComm((PetscObject)P), &pre));
+  PetscCall(MatSetType(pre, MATPREALLOCATOR));
+  PetscCall(MatSetSizes(pre, m, n, M, N));
+  PetscCall(MatSetBlockSize(pre, bs));
+  PetscCall(MatSetUp(pre));
+  for (PetscInt r = rstart; r < rend; ++r) {
+    PetscInt        nc;
+    const PetscInt *cols;
+    PetscCall(MatGetRow(P, r, &nc, &cols, NULL));
+    PetscCall(MatSetValues(pre, 1, &r, nc, cols, zeros, INSERT_VALUES));
+    PetscCall(MatRestoreRow(P, r, &nc, &cols, NULL));
+  }
+  for (PetscInt i = 0; i < c->n; ++i) {
+    PetscInt  nd, dofs[SP_ELEM_MAXD];
+    PetscReal A, g, Nv[SP_ELEM_MAXD];
+    if (c->facet[i] < 0) continue;
+    PetscCall(SPContactPointElement(c, i, &nd, dofs, &A, &g, Nv, NULL));
+    PetscCall(MatSetValues(pre, nd, dofs, nd, dofs, zeros, INSERT_VALUES));
+    Remember(c, i, c->mf[c->facet[i]].gid);
+  }
+  PetscCall(MatAssemblyBegin(pre, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(pre, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatPreallocatorPreallocate(pre, PETSC_TRUE, P));
+  PetscCall(MatDestroy(&pre));
+  PetscCall(PetscFree(zeros));
+  c->rebuilds++;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* K gets P's (larger) pattern, values kept */
+static PetscErrorCode Repattern(Mat P, Mat K)
+{
+  Mat Kn;
+
+  PetscFunctionBeginUser;
+  PetscCall(MatDuplicate(P, MAT_DO_NOT_COPY_VALUES, &Kn));
+  PetscCall(MatAXPY(Kn, 1.0, K, SUBSET_NONZERO_PATTERN));
+  PetscCall(MatHeaderReplace(K, &Kn));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Before a Jacobian assembly at locX: make P's pattern (and K's, if K) hold the pair couplings */
+PetscErrorCode SPContactSetUpJacobian(SPContact c, Vec locX, Mat P, Mat K)
+{
+  const PetscScalar *s;
+  PetscInt           missing = 0, any;
+
+  PetscFunctionBeginUser;
+  if (!c || !c->enabled || !c->npair) PetscFunctionReturn(PETSC_SUCCESS);
+  c->Jref = P;
+  PetscCall(SPContactEvaluate(c, locX));
+  PetscCall(VecGetArrayRead(c->shift, &s));
+  for (PetscInt i = 0; i < c->n && !missing; ++i)
+    if (c->facet[i] >= 0 && SPContactLawActive(c->gap[i], PetscRealPart(s[i])) && !Known(c, i, c->mf[c->facet[i]].gid)) missing = 1;
+  PetscCall(VecRestoreArrayRead(c->shift, &s));
+  PetscCallMPI(MPI_Allreduce(&missing, &any, 1, MPIU_INT, MPI_MAX, PetscObjectComm((PetscObject)P)));
+  if (!any) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(Rebuild(c, P));
+  if (K) PetscCall(Repattern(P, K));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}

@@ -1,0 +1,126 @@
+# Contact pairs (deformable-deformable, 2D node-to-segment): B5 patch test one-pass/two-pass with
+# every method, B6 two-body Hertz, frictionless sliding across segment junctions, the tangent at a
+# penetrated and slid state, parallel invariance with the interface cut by the partition, bad input.
+
+# max |p - q| / q over all contact points, from the contact-points CSV
+pairs_pressure_dev() { awk -F, -v q="$2" 'NR>1 { d = ($8 - q) / q; if (d < 0) d = -d; if (d > m) m = d } END { printf "%.3e\n", m }' "$1"; }
+
+# b5_case MESH METHOD TWO_PASS [bound]: converged, contact force q x 1 to 1e-8; with a bound, the
+# max relative pressure deviation must stay below it (two-pass shifted-type methods: 1e-6)
+b5_case() {
+  local mesh=$1 m=$2 tp=$3 bound=${4:-} out=$CASE_DIR/$1_$2_$3.txt rc=0
+  spc "$out" 1 -options_file input/patch_$mesh.opts -contact_method "$m" -contact_two_pass "$tp" -output_dir "$CASE_DIR" -output_name "p_${mesh}_${m}_$tp" || return 1
+  local dev; dev=$(pairs_pressure_dev "$CASE_DIR/p_${mesh}_${m}_${tp}_contact.csv" 0.01)
+  echo "B5 $mesh method $m two_pass $tp: newton $(sval "$out" newton_iterations) max_penetration $(sval "$out" contact_max_penetration) pressure_deviation $dev"
+  assert_eq converged "$(sval "$out" converged)" yes || rc=1
+  assert_close contact_force "$(sval "$out" contact_force_y)" 0.01 1e-8 || rc=1
+  [ -n "$bound" ] && { assert_le pressure_deviation "$dev" "$bound" || rc=1; }
+  return $rc
+}
+b5_all() { # one-pass is known to fail the patch test: its deviation is reported, not bounded
+  local mesh=$1 rc=0
+  for m in penalty shifted shifted_regression alm; do b5_case "$mesh" "$m" false || rc=1; done
+  b5_case "$mesh" penalty true || rc=1
+  for m in shifted shifted_regression alm; do b5_case "$mesh" "$m" true 1e-6 || rc=1; done
+  return $rc
+}
+test_pairs_b5_4_5() { b5_all 4_5; }
+test_pairs_b5_7_4() { b5_all 7_4; }
+
+# B6: E* = 0.549451, b = 0.152227, p0 = 0.0418205 (finite block: 3 %)
+test_pairs_b6_shifted() {
+  local out=$CASE_DIR/run.txt rc=0
+  spc "$out" 1 -options_file input/hertz2d_twobody.opts -output_dir "$CASE_DIR" || return 1
+  assert_eq converged "$(sval "$out" converged)" yes || rc=1
+  assert_close contact_force "$(sval "$out" contact_force_y)" 0.005 1e-8 || rc=1
+  assert_close master_force "$(sval "$out" contact_force_master_y)" -0.005 1e-8 || rc=1
+  assert_close peak_pressure "$(sval "$out" contact_peak_pressure)" 0.0418205 0.03 || rc=1
+  assert_le max_penetration "$(sval "$out" contact_max_penetration)" 1e-10 || rc=1
+  echo "half-width $(sval "$out" contact_radius) (b = 0.152227)"
+  assert_close jacobian_mallocs "$(sval "$out" contact_jacobian_mallocs)" 0 0 0 || rc=1
+  return $rc
+}
+
+# Sliding: a block pressed 0.005 into a longer one, then slid 0.6 in 12 steps (slave vertices every
+# 0.12 cross master vertices every 0.2; no crossing happens exactly at a converged state). Per step: slave/master forces balance, no penetration,
+# normal force within 3 % of the first step's, tangential force tiny (frictionless).
+test_pairs_slide() {
+  local out=$CASE_DIR/run.txt rc=0
+  spc "$out" 1 -options_file input/slide2d.opts -output_dir "$CASE_DIR" || return 1
+  assert_eq converged "$(sval "$out" converged)" yes || rc=1
+  grep '^contact_step' "$out"
+  [ "$(grep -c '^contact_step' "$out")" -eq 12 ] || { echo "expected 12 load steps"; rc=1; }
+  awk '/^contact_step/ { fx = $6; fy = $7; mx = $9; my = $10; pen = $12;
+         if (!f0) f0 = fy;
+         bal = (fy + my) / fy; if (bal < 0) bal = -bal; if (bal > mb) mb = bal;
+         t = fx / fy; if (t < 0) t = -t; if (t > mt) mt = t;
+         d = (fy - f0) / f0; if (d < 0) d = -d; if (d > md) md = d;
+         if (pen > mp) mp = pen }
+       END { printf "force_balance %.3e\ntangential_ratio %.3e\nnormal_force_variation %.3e\nmax_penetration_converged %.3e\n", mb, mt, md, mp }' "$out" > "$CASE_DIR/figs.txt"
+  cat "$CASE_DIR/figs.txt"
+  # Newton iterates (not converged states) of steps 2..12: bounded by 0.05 h, the same at crossings
+  awk -F, 'NR>1 { if ($6 > m[$1]) m[$1] = $6 } END { for (k in m) printf "step %d max penetration over its Newton iterates %.3e\n", k, m[k] }' "$CASE_DIR/slide2d.csv" | sort -k2 -n
+  local iter_pen; iter_pen=$(awk -F, 'NR>1 && $1 > 1 && $6 > m { m = $6 } END { printf "%.3e", m }' "$CASE_DIR/slide2d.csv")
+  assert_le force_balance "$(awk '$1=="force_balance"{print $2}' "$CASE_DIR/figs.txt")" 1e-10 || rc=1
+  assert_le tangential_ratio "$(awk '$1=="tangential_ratio"{print $2}' "$CASE_DIR/figs.txt")" 1e-3 || rc=1
+  assert_le normal_force_variation "$(awk '$1=="normal_force_variation"{print $2}' "$CASE_DIR/figs.txt")" 0.03 || rc=1
+  assert_le max_penetration_every_step "$(awk '$1=="max_penetration_converged"{print $2}' "$CASE_DIR/figs.txt")" 1e-10 || rc=1
+  assert_le max_penetration_iterates_steps_2_12 "$iter_pen" 0.006 || rc=1
+  return $rc
+}
+
+# Consistent finite-sliding tangent (projection and normal variations): penalty, the whole slide
+# in one step, so the Newton iterates are penetrated and slid; full geometric tangent.
+test_pairs_jacobian_slid() {
+  local out=$CASE_DIR/run.txt rc=0
+  spc "$out" 1 -options_file input/slide2d.opts -load_steps 1 -contact_method penalty -contact_pair_tangent full \
+    -snes_test_jacobian -snes_max_it 3 -contact_step_cap 0 -load_max_cutbacks 0 -ksp_type preonly -pc_type lu -contact_monitor -output_dir "$CASE_DIR"
+  grep -E '\|\|J - Jfd\|\|_F/\|\|J\|\|_F|contact +[0-9]' "$out"
+  grep '||J - Jfd||_F/||J||_F =' "$out" | sed 's/.*||J||_F = \([^,]*\),.*/\1/' > "$CASE_DIR/ratios.txt"
+  [ "$(wc -l < "$CASE_DIR/ratios.txt")" -ge 3 ] || { echo "expected 3 Jacobian tests"; return 1; }
+  while read -r r; do assert_le jacobian_ratio "$r" 1e-6 || rc=1; done < "$CASE_DIR/ratios.txt"
+  return $rc
+}
+
+# 1, 2, 3 ranks; METIS puts the bodies on different ranks, so contact elements have master
+# facets owned elsewhere (contact_remote_elements > 0)
+pairs_invariance() { # pairs_invariance OPTS [extra]
+  local opts=$1 rc=0; shift
+  for np in 1 2 3; do spc "$CASE_DIR/np$np.txt" $np -options_file "$opts" -output_dir "$CASE_DIR" -output_name np$np "$@" || return 1; done
+  for np in 2 3; do
+    echo "-- 1 rank vs $np ranks (remote elements $(sval "$CASE_DIR/np$np.txt" contact_remote_elements), mallocs $(sval "$CASE_DIR/np$np.txt" contact_jacobian_mallocs), exchange time $(sval "$CASE_DIR/np$np.txt" contact_exchange_time) s)"
+    assert_eq converged "$(sval "$CASE_DIR/np$np.txt" converged)" yes || rc=1
+    same_summary "$CASE_DIR/np1.txt" "$CASE_DIR/np$np.txt" 1e-8 contact_force_y contact_peak_pressure contact_radius contact_active_points displacement_max contact_points || rc=1
+    assert_ge remote_elements "$(sval "$CASE_DIR/np$np.txt" contact_remote_elements)" 1 || rc=1
+    assert_close jacobian_mallocs "$(sval "$CASE_DIR/np$np.txt" contact_jacobian_mallocs)" 0 0 0 || rc=1
+  done
+  return $rc
+}
+test_pairs_b6_parallel_invariance() { pairs_invariance input/hertz2d_twobody.opts; }
+test_pairs_b5_two_pass_parallel_invariance() { pairs_invariance input/patch_7_4.opts -contact_two_pass; }
+
+test_pairs_bad_input() {
+  local rc=0 i=0
+  while IFS='|' read -r why base args; do
+    [ -z "$why" ] && continue
+    i=$((i + 1))
+    timeout 60 $SPC -options_file "$base" -output_dir "$CASE_DIR" $args >"$CASE_DIR/o$i.txt" 2>"$CASE_DIR/e$i.txt"; code=$?
+    lines=$(wc -l < "$CASE_DIR/e$i.txt")
+    if [ $code -ne 0 ] && [ $code -lt 128 ] && [ "$lines" -eq 1 ] && grep -q '^spcontact: error:' "$CASE_DIR/e$i.txt"; then
+      echo "ok   $why: $(cat "$CASE_DIR/e$i.txt")"
+    else
+      echo "FAIL $why (exit $code, $lines stderr lines): $(head -3 "$CASE_DIR/e$i.txt")"; rc=1
+    fi
+  done <<'CASES'
+pair without master|input/patch_4_5.opts|-contact_pair_1_slave_values 3
+pair without slave|input/patch_4_5.opts|-contact_pair_1_master_values 2
+empty master values|input/patch_4_5.opts|-contact_pair_0_master_values
+slave = master|input/patch_4_5.opts|-contact_pair_0_master_values 3
+unknown master value|input/patch_4_5.opts|-contact_pair_0_master_values 42
+unknown pair label|input/patch_4_5.opts|-contact_pair_0_label nosuch
+unknown tangent|input/patch_4_5.opts|-contact_pair_tangent nosuch
+two-pass without pair|input/block2d.opts|-contact_two_pass
+pairs in 3D|input/block3d.opts|-contact_pair_0_slave_values 1 -contact_pair_0_master_values 2
+CASES
+  return $rc
+}
