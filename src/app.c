@@ -114,7 +114,7 @@ PetscErrorCode SPAppSummary(SPApp a)
   PetscReal      umax, err;
   PetscBool      hasErr, on;
   PetscLogDouble t1;
-  const char    *prefix;
+  const char    *prefix, *bulk;
 
   PetscFunctionBeginUser;
   PetscCall(SPSolverGetCounts(a->solver, &newton, &linear));
@@ -126,6 +126,8 @@ PetscErrorCode SPAppSummary(SPApp a)
   PetscCall(MeshSummary(a, v));
   PetscCall(PetscViewerASCIIPrintf(v, "converged %s\nload_steps %" PetscInt_FMT "\ncutbacks %" PetscInt_FMT "\nload_factor %g\n", a->converged ? "yes" : "no", a->stepsDone, a->cutbacks, (double)a->loadReached));
   PetscCall(PetscViewerASCIIPrintf(v, "newton_iterations %" PetscInt_FMT "\nlinear_iterations %" PetscInt_FMT "\n", newton, linear));
+  PetscCall(SPSolverGetBulkOperator(a->solver, &bulk));
+  PetscCall(PetscViewerASCIIPrintf(v, "bulk_operator %s\n", bulk));
   PetscCall(PetscViewerASCIIPrintf(v, "displacement_max %.10e\n", (double)umax));
   PetscCall(PetscViewerASCIIPrintf(v, "l2_error %.10e\n", hasErr ? (double)err : -1.0));
   PetscCall(SPContactIsActive(a->contact, &on));

@@ -4,23 +4,77 @@
    shift); a contact-aware test wraps SNESConvergedDefault. */
 #include <spcontact-impl.h>
 
-/* Bulk residual of the generic PetscFE path, added into the local vector locF */
-static PetscErrorCode BulkResidualFE(SPSolver s, Vec locX, Vec locF)
+/* Bulk residual (and Neumann terms), added into the local vector locF: the fast element operator
+   when it applies, PETSc's FEM residual otherwise */
+static PetscErrorCode BulkResidual(SPSolver s, Vec locX, Vec locF)
 {
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(s->log->bulkResidual, 0, 0, 0, 0));
-  PetscCall(DMPlexSNESComputeResidualFEM(s->dm, locX, locF, NULL));
+  if (s->fast) PetscCall(SPFastElasticAddResidual(s->fast, locX, locF));
+  else PetscCall(DMPlexSNESComputeResidualFEM(s->dm, locX, locF, NULL));
   PetscCall(PetscLogEventEnd(s->log->bulkResidual, 0, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode BulkJacobianFE(SPSolver s, Vec locX, Mat P)
+static PetscErrorCode BulkJacobian(SPSolver s, Vec locX, Mat P)
 {
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(s->log->bulkJacobian, 0, 0, 0, 0));
   PetscCall(MatZeroEntries(P));
-  PetscCall(DMPlexSNESComputeJacobianFEM(s->dm, locX, P, P, NULL));
+  if (s->fast) PetscCall(SPFastElasticAddJacobian(s->fast, P));
+  else PetscCall(DMPlexSNESComputeJacobianFEM(s->dm, locX, P, P, NULL));
   PetscCall(PetscLogEventEnd(s->log->bulkJacobian, 0, 0, 0, 0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* -solver_check_fast: residual and Jacobian of both bulk operators at one random state (Dirichlet
+   values and loads of the current load factor); prints |r_fast - r|/|r| and ||K_fast - K||_F/||K||_F */
+static PetscErrorCode CheckFast(SPSolver s)
+{
+  MPI_Comm    comm = PetscObjectComm((PetscObject)s->dm);
+  Vec         X, locX, locF, F[2];
+  Mat         A[2];
+  PetscRandom rnd;
+  PetscReal   nr, dr, nK, dK;
+
+  PetscFunctionBeginUser;
+  if (!s->fast) {
+    PetscCall(PetscPrintf(comm, "fast_check not_applicable (generic bulk operator)\n"));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  PetscCall(DMGetGlobalVector(s->dm, &X));
+  PetscCall(PetscRandomCreate(comm, &rnd));
+  PetscCall(VecSetRandom(X, rnd));
+  PetscCall(PetscRandomDestroy(&rnd));
+  PetscCall(VecScale(X, 1e-3));
+  PetscCall(SPProblemGetLocalState(s->problem, X, &locX));
+  PetscCall(DMGetLocalVector(s->dm, &locF));
+  for (PetscInt k = 0; k < 2; ++k) {
+    PetscCall(VecDuplicate(s->r, &F[k]));
+    PetscCall(VecZeroEntries(locF));
+    if (k) PetscCall(SPFastElasticAddResidual(s->fast, locX, locF));
+    else PetscCall(DMPlexSNESComputeResidualFEM(s->dm, locX, locF, NULL));
+    PetscCall(VecZeroEntries(F[k]));
+    PetscCall(DMLocalToGlobal(s->dm, locF, ADD_VALUES, F[k]));
+    PetscCall(MatDuplicate(s->J, MAT_DO_NOT_COPY_VALUES, &A[k]));
+    PetscCall(MatZeroEntries(A[k]));
+    if (k) PetscCall(SPFastElasticAddJacobian(s->fast, A[k]));
+    else PetscCall(DMPlexSNESComputeJacobianFEM(s->dm, locX, A[k], A[k], NULL));
+  }
+  PetscCall(VecNorm(F[0], NORM_2, &nr));
+  PetscCall(VecAXPY(F[1], -1.0, F[0]));
+  PetscCall(VecNorm(F[1], NORM_2, &dr));
+  PetscCall(MatNorm(A[0], NORM_FROBENIUS, &nK));
+  PetscCall(MatAXPY(A[1], -1.0, A[0], SAME_NONZERO_PATTERN));
+  PetscCall(MatNorm(A[1], NORM_FROBENIUS, &dK));
+  PetscCall(PetscPrintf(comm, "fast_check residual_rel_diff %.3e jacobian_rel_diff %.3e\n", (double)(dr / nr), (double)(dK / nK)));
+  for (PetscInt k = 0; k < 2; ++k) {
+    PetscCall(VecDestroy(&F[k]));
+    PetscCall(MatDestroy(&A[k]));
+  }
+  PetscCall(DMRestoreLocalVector(s->dm, &locF));
+  PetscCall(SPProblemRestoreLocalState(s->problem, &locX));
+  PetscCall(DMRestoreGlobalVector(s->dm, &X));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -37,7 +91,7 @@ static PetscErrorCode LinearParts(SPSolver s)
     PetscCall(VecZeroEntries(zero));
     PetscCall(SPProblemGetLocalState(s->problem, zero, &locX));
     PetscCall(MatDuplicate(s->J, MAT_DO_NOT_COPY_VALUES, &s->K));
-    PetscCall(BulkJacobianFE(s, locX, s->K));
+    PetscCall(BulkJacobian(s, locX, s->K));
     PetscCall(SPProblemRestoreLocalState(s->problem, &locX));
     PetscCall(DMRestoreGlobalVector(s->dm, &zero));
     PetscCall(VecDuplicate(s->r, &s->r0));
@@ -49,7 +103,7 @@ static PetscErrorCode LinearParts(SPSolver s)
     PetscCall(SPProblemGetLocalState(s->problem, zero, &locX));
     PetscCall(DMGetLocalVector(s->dm, &locF));
     PetscCall(VecZeroEntries(locF));
-    PetscCall(BulkResidualFE(s, locX, locF));
+    PetscCall(BulkResidual(s, locX, locF));
     PetscCall(VecZeroEntries(s->r0));
     PetscCall(DMLocalToGlobal(s->dm, locF, ADD_VALUES, s->r0));
     PetscCall(DMRestoreLocalVector(s->dm, &locF));
@@ -71,7 +125,7 @@ static PetscErrorCode FormFunction(SNES snes, Vec X, Vec F, void *ctx)
   PetscCall(SPProblemGetLocalState(s->problem, X, &locX));
   PetscCall(DMGetLocalVector(s->dm, &locF));
   PetscCall(VecZeroEntries(locF));
-  if (!s->reuse) PetscCall(BulkResidualFE(s, locX, locF));
+  if (!s->reuse) PetscCall(BulkResidual(s, locX, locF));
   if (on) {
     PetscCall(PetscLogEventBegin(s->log->contactAssembly, 0, 0, 0, 0));
     PetscCall(SPContactAddResidual(s->contact, locX, locF));
@@ -104,7 +158,7 @@ static PetscErrorCode FormJacobian(SNES snes, Vec X, Mat J, Mat P, void *ctx)
     PetscCall(PetscLogEventBegin(s->log->bulkJacobian, 0, 0, 0, 0));
     PetscCall(MatCopy(s->K, P, SAME_NONZERO_PATTERN));
     PetscCall(PetscLogEventEnd(s->log->bulkJacobian, 0, 0, 0, 0));
-  } else PetscCall(BulkJacobianFE(s, locX, P));
+  } else PetscCall(BulkJacobian(s, locX, P));
   PetscCall(SPContactIsActive(s->contact, &on));
   if (on) {
     PetscCall(PetscLogEventBegin(s->log->contactAssembly, 0, 0, 0, 0));
@@ -230,12 +284,16 @@ PetscErrorCode SPSolverSetFromOptions(SPSolver s)
 {
   SNESLineSearch ls;
   PetscBool      on;
+  PetscBool      fast = PETSC_TRUE;
 
   PetscFunctionBeginUser;
   PetscCall(SPProblemIsLinear(s->problem, &s->reuse));
   PetscOptionsBegin(PetscObjectComm((PetscObject)s->dm), NULL, "Solver options", "spcontact");
-  PetscCall(PetscOptionsBool("-solver_linear_reuse", "Linear material: assemble the bulk stiffness K once and use r(u) = r0(load) + K u (false: PetscFE residual/Jacobian every time)", "SPSolverSetFromOptions", s->reuse, &s->reuse, NULL));
+  PetscCall(PetscOptionsBool("-solver_linear_reuse", "Linear material: assemble the bulk stiffness K once and use r(u) = r0(load) + K u (false: bulk residual/Jacobian every time)", "SPSolverSetFromOptions", s->reuse, &s->reuse, NULL));
+  PetscCall(PetscOptionsBool("-solver_fast_bulk", "Element-level isotropic elasticity for P1/Q1 cells instead of PetscFE where it applies (false: always PetscFE)", "SPSolverSetFromOptions", fast, &fast, NULL));
+  PetscCall(PetscOptionsBool("-solver_check_fast", "Verification: compare the fast and the PetscFE bulk residual/Jacobian at a random state once, print the relative differences", "SPSolverSetFromOptions", s->checkFast, &s->checkFast, NULL));
   PetscOptionsEnd();
+  if (fast) PetscCall(SPFastElasticCreate(s->dm, s->problem, &s->fast));
   /* Full Newton steps: the penalty residual is piecewise linear (semismooth Newton); backtracking
      on |F| crawls there, adding one active point per iteration. */
   PetscCall(SNESGetLineSearch(s->snes, &ls));
@@ -280,6 +338,10 @@ PetscErrorCode SPSolverSolve(SPSolver s, Vec u, SNESConvergedReason *reason)
   PetscBool on;
 
   PetscFunctionBeginUser;
+  if (s->checkFast) {
+    PetscCall(CheckFast(s));
+    s->checkFast = PETSC_FALSE;
+  }
   PetscCall(SPContactIsActive(s->contact, &on));
   PetscCall(NewtonSolve(s, u, reason));
   if (!on || !s->contact->entry->augments) PetscFunctionReturn(PETSC_SUCCESS);
@@ -305,6 +367,13 @@ PetscErrorCode SPSolverGetCounts(SPSolver s, PetscInt *newton, PetscInt *linear)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+PetscErrorCode SPSolverGetBulkOperator(SPSolver s, const char **name)
+{
+  PetscFunctionBeginUser;
+  *name = s->fast ? "fast" : "petscfe";
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode SPSolverDestroy(SPSolver *solver)
 {
   PetscFunctionBeginUser;
@@ -314,6 +383,7 @@ PetscErrorCode SPSolverDestroy(SPSolver *solver)
   PetscCall(MatDestroy(&(*solver)->K));
   PetscCall(VecDestroy(&(*solver)->r0));
   PetscCall(VecDestroy(&(*solver)->r));
+  PetscCall(SPFastElasticDestroy(&(*solver)->fast));
   PetscCall(PetscFree(*solver));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
