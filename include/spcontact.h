@@ -26,6 +26,7 @@ typedef struct _n_SPFastElastic *SPFastElastic; /* element-level linear elastici
 typedef struct {
   PetscLogStage mesh, setup, solve, output;
   PetscLogEvent bulkResidual, bulkJacobian, contactSearch, contactAssembly, shiftUpdate;
+  PetscLogEvent matCreate, nearNullSpace, fastSetUp;
 } SPLog;
 PETSC_EXTERN PetscErrorCode SPLogRegister(SPLog *);
 
@@ -80,6 +81,11 @@ PETSC_EXTERN PetscErrorCode SPContactGetFields(SPContact, Vec, Vec, Vec, Vec, Ve
 PETSC_EXTERN PetscErrorCode SPContactWritePoints(SPContact, Vec, const char[]);
 PETSC_EXTERN PetscErrorCode SPContactView(SPContact, PetscViewer);
 PETSC_EXTERN PetscErrorCode SPContactDestroy(SPContact *);
+
+/* matrix.c */
+PETSC_EXTERN PetscErrorCode SPMatrixCreate(DM, PetscBool, PetscInt, const PetscInt[], Mat *);
+PETSC_EXTERN PetscErrorCode SPMatrixSetRigidBodyModes(DM, PetscBool, Mat);
+PETSC_EXTERN PetscErrorCode SPVertexGlobalIndices(PetscSection, PetscSection, PetscInt, PetscInt, PetscInt[]);
 
 /* fast-elastic.c */
 PETSC_EXTERN PetscErrorCode SPFastElasticCreate(DM, SPProblem, SPFastElastic *);

@@ -38,25 +38,6 @@ static PetscErrorCode ScalarGradients(SPFastElastic f, PetscFE fe, PetscBool *ok
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Global index of component i of vertex v, as DMPlexGetClosureIndices gives it: constrained
-   components negative, the others numbered consecutively from the (owner's) global offset */
-static PetscErrorCode VertexGlobalIndices(PetscSection ls, PetscSection gs, PetscInt v, PetscInt dim, PetscInt idx[])
-{
-  PetscInt        goff, ncon, k = 0, j = 0;
-  const PetscInt *cind = NULL;
-
-  PetscFunctionBeginUser;
-  PetscCall(PetscSectionGetOffset(gs, v, &goff));
-  if (goff < 0) goff = -(goff + 1);
-  PetscCall(PetscSectionGetConstraintDof(ls, v, &ncon));
-  if (ncon) PetscCall(PetscSectionGetConstraintIndices(ls, v, &cind));
-  for (PetscInt i = 0; i < dim; ++i) {
-    if (j < ncon && cind[j] == i) idx[i] = -(goff + i + 1), ++j;
-    else idx[i] = goff + k++;
-  }
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 /* Per cell: the vertices in closure order (the FE basis order), their global and local dof
    indices, and their coordinates. Built from one transitive closure per cell; the indices are
    checked against DMPlexGetClosureIndices on the first cells (closure permutations, layouts). */
@@ -90,7 +71,7 @@ static PetscErrorCode CacheCells(SPFastElastic f, PetscBool *ok)
         break;
       }
       PetscCall(PetscSectionGetOffset(ls, v, &off));
-      PetscCall(VertexGlobalIndices(ls, gs, v, dim, &f->gidx[c * f->nidx + a * dim]));
+      PetscCall(SPVertexGlobalIndices(ls, gs, v, dim, &f->gidx[c * f->nidx + a * dim]));
       for (PetscInt i = 0; i < dim; ++i) {
         f->lidx[c * f->nidx + a * dim + i] = off + i;
         f->xc[c * f->nidx + a * dim + i]   = PetscRealPart(x[coff + i]);

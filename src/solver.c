@@ -27,6 +27,44 @@ static PetscErrorCode BulkJacobian(SPSolver s, Vec locX, Mat P)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The matrix against DMCreateMatrix's (nonzeros, allocation, block size) and its rigid-body modes
+   against DMPlexCreateRigidBody's (max norm of the differences) */
+static PetscErrorCode CheckMatrix(SPSolver s)
+{
+  Mat          R;
+  MatInfo      a, b;
+  PetscInt     bsA, bsB, nA, nB;
+  MatNullSpace spA, spB;
+  const Vec   *vA, *vB;
+  PetscReal    diff = 0.0;
+
+  PetscFunctionBeginUser;
+  PetscCall(MatGetNearNullSpace(s->J, &spA));
+  PetscCall(DMPlexCreateRigidBody(s->dm, 0, &spB));
+  PetscCall(MatNullSpaceGetVecs(spA, NULL, &nA, &vA));
+  PetscCall(MatNullSpaceGetVecs(spB, NULL, &nB, &vB));
+  for (PetscInt k = 0; k < PetscMin(nA, nB); ++k) {
+    Vec       d;
+    PetscReal nd;
+    PetscCall(VecDuplicate(vA[k], &d));
+    PetscCall(VecWAXPY(d, -1.0, vA[k], vB[k]));
+    PetscCall(VecNorm(d, NORM_INFINITY, &nd));
+    PetscCall(VecDestroy(&d));
+    diff = PetscMax(diff, nd);
+  }
+  if (nA != nB) diff = PETSC_MAX_REAL;
+  PetscCall(MatNullSpaceDestroy(&spB));
+  PetscCall(PetscPrintf(PetscObjectComm((PetscObject)s->dm), "rigid_body_check modes %" PetscInt_FMT " max_difference %.3e\n", nA, (double)diff));
+  PetscCall(DMCreateMatrix(s->dm, &R));
+  PetscCall(MatGetInfo(s->J, MAT_GLOBAL_SUM, &a));
+  PetscCall(MatGetInfo(R, MAT_GLOBAL_SUM, &b));
+  PetscCall(MatGetBlockSize(s->J, &bsA));
+  PetscCall(MatGetBlockSize(R, &bsB));
+  PetscCall(PetscPrintf(PetscObjectComm((PetscObject)s->dm), "matrix_check nonzeros %.0f allocated %.0f block_size %" PetscInt_FMT " dmcreatematrix_nonzeros %.0f block_size %" PetscInt_FMT "\n", a.nz_used, a.nz_allocated, bsA, b.nz_used, bsB));
+  PetscCall(MatDestroy(&R));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* -solver_check_fast: residual and Jacobian of both bulk operators at one random state (Dirichlet
    values and loads of the current load factor); prints |r_fast - r|/|r| and ||K_fast - K||_F/||K||_F */
 static PetscErrorCode CheckFast(SPSolver s)
@@ -38,6 +76,7 @@ static PetscErrorCode CheckFast(SPSolver s)
   PetscReal   nr, dr, nK, dK;
 
   PetscFunctionBeginUser;
+  PetscCall(CheckMatrix(s));
   if (!s->fast) {
     PetscCall(PetscPrintf(comm, "fast_check not_applicable (generic bulk operator)\n"));
     PetscFunctionReturn(PETSC_SUCCESS);
@@ -244,7 +283,6 @@ PetscErrorCode SPSolverCreate(DM dm, SPProblem problem, SPContact contact, SPLog
   SPSolver     s;
   KSP          ksp;
   PC           pc;
-  MatNullSpace nsp;
 
   PetscFunctionBeginUser;
   PetscCall(PetscNew(&s));
@@ -253,14 +291,9 @@ PetscErrorCode SPSolverCreate(DM dm, SPProblem problem, SPContact contact, SPLog
   s->contact = contact;
   s->log     = log;
   PetscCall(DMCreateGlobalVector(dm, &s->r));
-  PetscCall(DMCreateMatrix(dm, &s->J));
-  PetscCall(DMPlexCreateRigidBody(dm, 0, &nsp)); /* on the dof layout: constrained dofs excluded */
-  PetscCall(MatSetNearNullSpace(s->J, nsp));
-  PetscCall(MatNullSpaceDestroy(&nsp));
   PetscCall(SNESCreate(PetscObjectComm((PetscObject)dm), &s->snes));
   PetscCall(SNESSetDM(s->snes, dm));
   PetscCall(SNESSetFunction(s->snes, s->r, FormFunction, s));
-  PetscCall(SNESSetJacobian(s->snes, s->J, s->J, FormJacobian, s));
   PetscCall(SNESSetConvergenceTest(s->snes, Converged, s, NULL));
   PetscCall(SNESSetTolerances(s->snes, 1e-12, 1e-9, PETSC_DEFAULT, 50, PETSC_DEFAULT));
   /* a load-controlled body touching at one point legitimately raises |F| at first */
@@ -280,20 +313,40 @@ PetscErrorCode SPSolverCreate(DM dm, SPProblem problem, SPContact contact, SPLog
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The system matrix (one function: see SPMatrixCreate for extra couplings) and its near-null space */
+static PetscErrorCode SetUpMatrix(SPSolver s, PetscBool prealloc)
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(s->log->matCreate, 0, 0, 0, 0));
+  PetscCall(SPMatrixCreate(s->dm, prealloc, 0, NULL, &s->J));
+  PetscCall(PetscLogEventEnd(s->log->matCreate, 0, 0, 0, 0));
+  PetscCall(PetscLogEventBegin(s->log->nearNullSpace, 0, 0, 0, 0));
+  PetscCall(SPMatrixSetRigidBodyModes(s->dm, prealloc, s->J));
+  PetscCall(PetscLogEventEnd(s->log->nearNullSpace, 0, 0, 0, 0));
+  PetscCall(SNESSetJacobian(s->snes, s->J, s->J, FormJacobian, s));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode SPSolverSetFromOptions(SPSolver s)
 {
   SNESLineSearch ls;
   PetscBool      on;
-  PetscBool      fast = PETSC_TRUE;
+  PetscBool      fast = PETSC_TRUE, prealloc = PETSC_TRUE;
 
   PetscFunctionBeginUser;
   PetscCall(SPProblemIsLinear(s->problem, &s->reuse));
   PetscOptionsBegin(PetscObjectComm((PetscObject)s->dm), NULL, "Solver options", "spcontact");
   PetscCall(PetscOptionsBool("-solver_linear_reuse", "Linear material: assemble the bulk stiffness K once and use r(u) = r0(load) + K u (false: bulk residual/Jacobian every time)", "SPSolverSetFromOptions", s->reuse, &s->reuse, NULL));
   PetscCall(PetscOptionsBool("-solver_fast_bulk", "Element-level isotropic elasticity for P1/Q1 cells instead of PetscFE where it applies (false: always PetscFE)", "SPSolverSetFromOptions", fast, &fast, NULL));
-  PetscCall(PetscOptionsBool("-solver_check_fast", "Verification: compare the fast and the PetscFE bulk residual/Jacobian at a random state once, print the relative differences", "SPSolverSetFromOptions", s->checkFast, &s->checkFast, NULL));
+  PetscCall(PetscOptionsBool("-solver_check_fast", "Verification: compare the fast and the PetscFE bulk residual/Jacobian (and the matrix pattern with DMCreateMatrix's) once, print the relative differences", "SPSolverSetFromOptions", s->checkFast, &s->checkFast, NULL));
+  PetscCall(PetscOptionsBool("-solver_fast_prealloc", "First-order mesh: preallocate the matrix from vertex adjacency and build the rigid-body modes from vertex coordinates (false: DMCreateMatrix, DMPlexCreateRigidBody)", "SPSolverSetFromOptions", prealloc, &prealloc, NULL));
   PetscOptionsEnd();
-  if (fast) PetscCall(SPFastElasticCreate(s->dm, s->problem, &s->fast));
+  PetscCall(SetUpMatrix(s, prealloc));
+  if (fast) {
+    PetscCall(PetscLogEventBegin(s->log->fastSetUp, 0, 0, 0, 0));
+    PetscCall(SPFastElasticCreate(s->dm, s->problem, &s->fast));
+    PetscCall(PetscLogEventEnd(s->log->fastSetUp, 0, 0, 0, 0));
+  }
   /* Full Newton steps: the penalty residual is piecewise linear (semismooth Newton); backtracking
      on |F| crawls there, adding one active point per iteration. */
   PetscCall(SNESGetLineSearch(s->snes, &ls));
