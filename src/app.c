@@ -106,6 +106,20 @@ static PetscErrorCode MeshSummary(SPApp a, PetscViewer v)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Peak resident memory of this process in MiB (Linux VmHWM; -1 where /proc is not available) */
+static PetscReal PeakMemoryMiB(void)
+{
+  FILE     *fp = fopen("/proc/self/status", "r");
+  char      line[256];
+  PetscReal kb = -1024.0;
+
+  if (!fp) return -1.0;
+  while (fgets(line, sizeof(line), fp))
+    if (!strncmp(line, "VmHWM:", 6)) kb = atof(line + 6);
+  fclose(fp);
+  return kb / 1024.0;
+}
+
 /* The summary block: one `key value` per line, the same keys every run (contact_* only with contact). */
 PetscErrorCode SPAppSummary(SPApp a)
 {
@@ -139,6 +153,11 @@ PetscErrorCode SPAppSummary(SPApp a)
     PetscCall(PetscViewerASCIIPrintf(v, "contact_max_penetration %.10e\n", (double)st.maxPenetration));
     PetscCall(PetscViewerASCIIPrintf(v, "contact_force_x %.12e\ncontact_force_y %.12e\ncontact_force_z %.12e\n", (double)st.force[0], (double)st.force[1], (double)st.force[2]));
     PetscCall(PetscViewerASCIIPrintf(v, "contact_peak_pressure %.12e\ncontact_radius %.10e\n", (double)st.peakPressure, (double)st.contactRadius));
+  }
+  {
+    PetscReal mem = PeakMemoryMiB(), memMax;
+    PetscCallMPI(MPI_Allreduce(&mem, &memMax, 1, MPIU_REAL, MPI_MAX, a->comm));
+    PetscCall(PetscViewerASCIIPrintf(v, "memory_peak_rank_mib %.1f\n", (double)memMax));
   }
   PetscCall(PetscViewerASCIIPrintf(v, "output_prefix %s\n", prefix));
   PetscCall(PetscViewerASCIIPrintf(v, "wall_time %.3f\n", (double)(t1 - a->t0)));
