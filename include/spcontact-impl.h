@@ -23,7 +23,9 @@ typedef PetscErrorCode (*SPMaterialSetUpFn)(PetscDS, PetscReal, PetscReal, Petsc
 typedef struct {
   const char       *name;
   SPMaterialSetUpFn setup;
-  PetscBool         linear; /* stress linear in the strain */
+  PetscBool         linear;    /* stress linear in the strain */
+  PetscBool         isotropic; /* isotropic linear elastic, Lame constants in SP_C_LAMBDA/SP_C_MU:
+                                  the fast element operator (fast-elastic.c) may replace PetscFE */
 } SPMaterialEntry;
 PETSC_EXTERN PetscErrorCode SPMaterialSetUp_LinearElastic(PetscDS, PetscReal, PetscReal, PetscScalar[]);
 
@@ -36,7 +38,8 @@ struct _n_SPProblem {
   PetscInt  nbc;
   SPBC      bc[SP_MAX_BC];
   PetscReal mmsAmp; /* manufactured-solution amplitude; 0 = off */
-  PetscBool linear; /* residual affine in u: stiffness reuse is exact */
+  PetscBool linear;    /* residual affine in u: stiffness reuse is exact */
+  PetscBool isotropic; /* isotropic linear elastic material (SPMaterialEntry.isotropic) */
   Vec       locBC;  /* local vector holding the Dirichlet values of load factor bcLoad */
   PetscReal bcLoad;
 };
@@ -156,6 +159,17 @@ PETSC_EXTERN PetscErrorCode SPContactPairsDestroy(SPContact);
 PETSC_EXTERN PetscBool      SPContactPairGeometricTangent(SPContact);
 PETSC_EXTERN PetscErrorCode SPOutputWriteXdmf(SPOutput);
 
+/* fast-elastic.c: element-level isotropic linear elasticity on first-order cells */
+struct _n_SPFastElastic {
+  DM               dm; /* not owned */
+  PetscInt         dim, nb, nq, nidx, cStart, cEnd; /* nb nodes per cell, nidx = nb dim */
+  PetscQuadrature  quad;                            /* the FE's cell quadrature, not owned */
+  const PetscReal *w;                               /* its weights */
+  PetscReal       *dN;          /* reference gradients of the scalar basis, (q nb + a) dim + k */
+  PetscInt        *gidx, *lidx; /* per cell: global (constrained < 0) and local closure indices */
+  PetscReal       *xc;          /* per cell: node coordinates, closure order */
+};
+
 struct _n_SPSolver {
   DM                  dm;
   SPProblem           problem;
@@ -170,6 +184,8 @@ struct _n_SPSolver {
   PetscBool           reuse;  /* linear material: K assembled once, r(u) = r0(load) + K u */
   Mat                 K;
   Vec                 r0;
+  SPFastElastic       fast;      /* NULL: the generic PetscFE bulk operator */
+  PetscBool           checkFast; /* compare the fast and the generic operator once, print the differences */
   PetscReal           r0Load;
 };
 

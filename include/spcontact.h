@@ -20,11 +20,13 @@ typedef struct _n_SPContact *SPContact; /* contact points, obstacles, method, sh
 typedef struct _n_SPOutput  *SPOutput;  /* HDF5 + XDMF fields, CSV history */
 typedef struct _n_SPSolver  *SPSolver;  /* SNES with the contact-aware callbacks */
 typedef struct _n_SPApp     *SPApp;     /* owns every module object */
+typedef struct _n_SPFastElastic *SPFastElastic; /* element-level linear elasticity, first order */
 
 /* Log stages and events: one per module, so -log_view tells where time goes. */
 typedef struct {
   PetscLogStage mesh, setup, solve, output;
   PetscLogEvent bulkResidual, bulkJacobian, contactSearch, contactAssembly, shiftUpdate;
+  PetscLogEvent matCreate, nearNullSpace, fastSetUp;
 } SPLog;
 PETSC_EXTERN PetscErrorCode SPLogRegister(SPLog *);
 
@@ -85,12 +87,24 @@ PETSC_EXTERN PetscErrorCode SPContactWritePoints(SPContact, Vec, const char[]);
 PETSC_EXTERN PetscErrorCode SPContactView(SPContact, PetscViewer);
 PETSC_EXTERN PetscErrorCode SPContactDestroy(SPContact *);
 
+/* matrix.c */
+PETSC_EXTERN PetscErrorCode SPMatrixCreate(DM, PetscBool, PetscInt, const PetscInt[], Mat *);
+PETSC_EXTERN PetscErrorCode SPMatrixSetRigidBodyModes(DM, PetscBool, Mat);
+PETSC_EXTERN PetscErrorCode SPVertexGlobalIndices(PetscSection, PetscSection, PetscInt, PetscInt, PetscInt[]);
+
+/* fast-elastic.c */
+PETSC_EXTERN PetscErrorCode SPFastElasticCreate(DM, SPProblem, SPFastElastic *);
+PETSC_EXTERN PetscErrorCode SPFastElasticAddJacobian(SPFastElastic, Mat);
+PETSC_EXTERN PetscErrorCode SPFastElasticAddResidual(SPFastElastic, Vec, Vec);
+PETSC_EXTERN PetscErrorCode SPFastElasticDestroy(SPFastElastic *);
+
 /* solver.c */
 PETSC_EXTERN PetscErrorCode SPSolverCreate(DM, SPProblem, SPContact, SPLog *, SPSolver *);
 PETSC_EXTERN PetscErrorCode SPSolverSetFromOptions(SPSolver);
 PETSC_EXTERN PetscErrorCode SPSolverSolve(SPSolver, Vec, SNESConvergedReason *);
 PETSC_EXTERN PetscErrorCode SPSolverSetHistory(SPSolver, FILE *, PetscInt);
 PETSC_EXTERN PetscErrorCode SPSolverGetCounts(SPSolver, PetscInt *, PetscInt *);
+PETSC_EXTERN PetscErrorCode SPSolverGetBulkOperator(SPSolver, const char **);
 PETSC_EXTERN PetscErrorCode SPSolverDestroy(SPSolver *);
 
 /* loading.c */

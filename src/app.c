@@ -106,6 +106,20 @@ static PetscErrorCode MeshSummary(SPApp a, PetscViewer v)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Peak resident memory of this process in MiB (Linux VmHWM; -1 where /proc is not available) */
+static PetscReal PeakMemoryMiB(void)
+{
+  FILE     *fp = fopen("/proc/self/status", "r");
+  char      line[256];
+  PetscReal kb = -1024.0;
+
+  if (!fp) return -1.0;
+  while (fgets(line, sizeof(line), fp))
+    if (!strncmp(line, "VmHWM:", 6)) kb = atof(line + 6);
+  fclose(fp);
+  return kb / 1024.0;
+}
+
 /* The summary block: one `key value` per line, the same keys every run (contact_* only with contact). */
 PetscErrorCode SPAppSummary(SPApp a)
 {
@@ -114,7 +128,7 @@ PetscErrorCode SPAppSummary(SPApp a)
   PetscReal      umax, err;
   PetscBool      hasErr, on;
   PetscLogDouble t1;
-  const char    *prefix;
+  const char    *prefix, *bulk;
 
   PetscFunctionBeginUser;
   PetscCall(SPSolverGetCounts(a->solver, &newton, &linear));
@@ -126,6 +140,8 @@ PetscErrorCode SPAppSummary(SPApp a)
   PetscCall(MeshSummary(a, v));
   PetscCall(PetscViewerASCIIPrintf(v, "converged %s\nload_steps %" PetscInt_FMT "\ncutbacks %" PetscInt_FMT "\nload_factor %g\n", a->converged ? "yes" : "no", a->stepsDone, a->cutbacks, (double)a->loadReached));
   PetscCall(PetscViewerASCIIPrintf(v, "newton_iterations %" PetscInt_FMT "\nlinear_iterations %" PetscInt_FMT "\n", newton, linear));
+  PetscCall(SPSolverGetBulkOperator(a->solver, &bulk));
+  PetscCall(PetscViewerASCIIPrintf(v, "bulk_operator %s\n", bulk));
   PetscCall(PetscViewerASCIIPrintf(v, "displacement_max %.10e\n", (double)umax));
   PetscCall(PetscViewerASCIIPrintf(v, "l2_error %.10e\n", hasErr ? (double)err : -1.0));
   PetscCall(SPContactIsActive(a->contact, &on));
@@ -142,6 +158,11 @@ PetscErrorCode SPAppSummary(SPApp a)
       PetscCall(PetscViewerASCIIPrintf(v, "contact_remote_elements %" PetscInt_FMT "\n", st.remoteElements));
     }
     PetscCall(PetscViewerASCIIPrintf(v, "contact_peak_pressure %.12e\ncontact_radius %.10e\n", (double)st.peakPressure, (double)st.contactRadius));
+  }
+  {
+    PetscReal mem = PeakMemoryMiB(), memMax;
+    PetscCallMPI(MPI_Allreduce(&mem, &memMax, 1, MPIU_REAL, MPI_MAX, a->comm));
+    PetscCall(PetscViewerASCIIPrintf(v, "memory_peak_rank_mib %.1f\n", (double)memMax));
   }
   PetscCall(PetscViewerASCIIPrintf(v, "output_prefix %s\n", prefix));
   PetscCall(PetscViewerASCIIPrintf(v, "wall_time %.3f\n", (double)(t1 - a->t0)));

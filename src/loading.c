@@ -52,7 +52,9 @@ PetscErrorCode SPLoadingRun(SPApp app)
     done = load;
     step++;
     cuts = 0;
+    PetscCall(PetscLogStagePush(app->log.output)); /* stage times are exclusive: output leaves "SP solve" */
     PetscCall(SPOutputWriteStep(app->output, app->problem, app->u, app->contact));
+    PetscCall(PetscLogStagePop());
     PetscCall(SPContactReportStep(app->contact, app->u, step, load));
   }
   app->stepsDone   = step;

@@ -16,5 +16,8 @@ PetscErrorCode SPLogRegister(SPLog *log)
   PetscCall(PetscLogEventRegister("SPContactSearch", id, &log->contactSearch));
   PetscCall(PetscLogEventRegister("SPContactAssem", id, &log->contactAssembly));
   PetscCall(PetscLogEventRegister("SPShiftUpdate", id, &log->shiftUpdate));
+  PetscCall(PetscLogEventRegister("SPMatCreate", id, &log->matCreate));
+  PetscCall(PetscLogEventRegister("SPNearNullSpace", id, &log->nearNullSpace));
+  PetscCall(PetscLogEventRegister("SPFastSetUp", id, &log->fastSetUp));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -4,7 +4,8 @@
 #include <kernels/elastic.h>
 
 static const SPMaterialEntry SPMaterials[] = {
-  {"linear_elastic", SPMaterialSetUp_LinearElastic, PETSC_TRUE},
+  /* name            setup                          linear      isotropic */
+  {"linear_elastic", SPMaterialSetUp_LinearElastic, PETSC_TRUE, PETSC_TRUE},
 };
 
 PetscErrorCode SPProblemCreate(DM dm, SPProblem *problem)
@@ -51,7 +52,8 @@ static PetscErrorCode SetUpMaterial(SPProblem p, PetscDS ds, PetscScalar constan
     PetscCall(PetscStrcmp(p->material, SPMaterials[i].name, &match));
     if (match) {
       PetscCall(SPMaterials[i].setup(ds, p->E, p->nu, constants));
-      p->linear = SPMaterials[i].linear;
+      p->linear    = SPMaterials[i].linear;
+      p->isotropic = SPMaterials[i].isotropic;
       PetscFunctionReturn(PETSC_SUCCESS);
     }
   }

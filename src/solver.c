@@ -4,23 +4,116 @@
    shift); a contact-aware test wraps SNESConvergedDefault. */
 #include <spcontact-impl.h>
 
-/* Bulk residual of the generic PetscFE path, added into the local vector locF */
-static PetscErrorCode BulkResidualFE(SPSolver s, Vec locX, Vec locF)
+/* Bulk residual (and Neumann terms), added into the local vector locF: the fast element operator
+   when it applies, PETSc's FEM residual otherwise */
+static PetscErrorCode BulkResidual(SPSolver s, Vec locX, Vec locF)
 {
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(s->log->bulkResidual, 0, 0, 0, 0));
-  PetscCall(DMPlexSNESComputeResidualFEM(s->dm, locX, locF, NULL));
+  if (s->fast) PetscCall(SPFastElasticAddResidual(s->fast, locX, locF));
+  else PetscCall(DMPlexSNESComputeResidualFEM(s->dm, locX, locF, NULL));
   PetscCall(PetscLogEventEnd(s->log->bulkResidual, 0, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode BulkJacobianFE(SPSolver s, Vec locX, Mat P)
+static PetscErrorCode BulkJacobian(SPSolver s, Vec locX, Mat P)
 {
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(s->log->bulkJacobian, 0, 0, 0, 0));
   PetscCall(MatZeroEntries(P));
-  PetscCall(DMPlexSNESComputeJacobianFEM(s->dm, locX, P, P, NULL));
+  if (s->fast) PetscCall(SPFastElasticAddJacobian(s->fast, P));
+  else PetscCall(DMPlexSNESComputeJacobianFEM(s->dm, locX, P, P, NULL));
   PetscCall(PetscLogEventEnd(s->log->bulkJacobian, 0, 0, 0, 0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The matrix against DMCreateMatrix's (nonzeros, allocation, block size) and its rigid-body modes
+   against DMPlexCreateRigidBody's (max norm of the differences) */
+static PetscErrorCode CheckMatrix(SPSolver s)
+{
+  Mat          R;
+  MatInfo      a, b;
+  PetscInt     bsA, bsB, nA, nB;
+  MatNullSpace spA, spB;
+  const Vec   *vA, *vB;
+  PetscReal    diff = 0.0;
+
+  PetscFunctionBeginUser;
+  PetscCall(MatGetNearNullSpace(s->J, &spA));
+  PetscCall(DMPlexCreateRigidBody(s->dm, 0, &spB));
+  PetscCall(MatNullSpaceGetVecs(spA, NULL, &nA, &vA));
+  PetscCall(MatNullSpaceGetVecs(spB, NULL, &nB, &vB));
+  for (PetscInt k = 0; k < PetscMin(nA, nB); ++k) {
+    Vec       d;
+    PetscReal nd;
+    PetscCall(VecDuplicate(vA[k], &d));
+    PetscCall(VecWAXPY(d, -1.0, vA[k], vB[k]));
+    PetscCall(VecNorm(d, NORM_INFINITY, &nd));
+    PetscCall(VecDestroy(&d));
+    diff = PetscMax(diff, nd);
+  }
+  if (nA != nB) diff = PETSC_MAX_REAL;
+  PetscCall(MatNullSpaceDestroy(&spB));
+  PetscCall(PetscPrintf(PetscObjectComm((PetscObject)s->dm), "rigid_body_check modes %" PetscInt_FMT " max_difference %.3e\n", nA, (double)diff));
+  PetscCall(DMCreateMatrix(s->dm, &R));
+  PetscCall(MatGetInfo(s->J, MAT_GLOBAL_SUM, &a));
+  PetscCall(MatGetInfo(R, MAT_GLOBAL_SUM, &b));
+  PetscCall(MatGetBlockSize(s->J, &bsA));
+  PetscCall(MatGetBlockSize(R, &bsB));
+  PetscCall(PetscPrintf(PetscObjectComm((PetscObject)s->dm), "matrix_check nonzeros %.0f allocated %.0f block_size %" PetscInt_FMT " dmcreatematrix_nonzeros %.0f block_size %" PetscInt_FMT "\n", a.nz_used, a.nz_allocated, bsA, b.nz_used, bsB));
+  PetscCall(MatDestroy(&R));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* -solver_check_fast: residual and Jacobian of both bulk operators at one random state (Dirichlet
+   values and loads of the current load factor); prints |r_fast - r|/|r| and ||K_fast - K||_F/||K||_F */
+static PetscErrorCode CheckFast(SPSolver s)
+{
+  MPI_Comm    comm = PetscObjectComm((PetscObject)s->dm);
+  Vec         X, locX, locF, F[2];
+  Mat         A[2];
+  PetscRandom rnd;
+  PetscReal   nr, dr, nK, dK;
+
+  PetscFunctionBeginUser;
+  PetscCall(CheckMatrix(s));
+  if (!s->fast) {
+    PetscCall(PetscPrintf(comm, "fast_check not_applicable (generic bulk operator)\n"));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  PetscCall(DMGetGlobalVector(s->dm, &X));
+  PetscCall(PetscRandomCreate(comm, &rnd));
+  PetscCall(VecSetRandom(X, rnd));
+  PetscCall(PetscRandomDestroy(&rnd));
+  PetscCall(VecScale(X, 1e-3));
+  PetscCall(SPProblemGetLocalState(s->problem, X, &locX));
+  PetscCall(DMGetLocalVector(s->dm, &locF));
+  for (PetscInt k = 0; k < 2; ++k) {
+    PetscCall(VecDuplicate(s->r, &F[k]));
+    PetscCall(VecZeroEntries(locF));
+    if (k) PetscCall(SPFastElasticAddResidual(s->fast, locX, locF));
+    else PetscCall(DMPlexSNESComputeResidualFEM(s->dm, locX, locF, NULL));
+    PetscCall(VecZeroEntries(F[k]));
+    PetscCall(DMLocalToGlobal(s->dm, locF, ADD_VALUES, F[k]));
+    PetscCall(MatDuplicate(s->J, MAT_DO_NOT_COPY_VALUES, &A[k]));
+    PetscCall(MatZeroEntries(A[k]));
+    if (k) PetscCall(SPFastElasticAddJacobian(s->fast, A[k]));
+    else PetscCall(DMPlexSNESComputeJacobianFEM(s->dm, locX, A[k], A[k], NULL));
+  }
+  PetscCall(VecNorm(F[0], NORM_2, &nr));
+  PetscCall(VecAXPY(F[1], -1.0, F[0]));
+  PetscCall(VecNorm(F[1], NORM_2, &dr));
+  PetscCall(MatNorm(A[0], NORM_FROBENIUS, &nK));
+  PetscCall(MatAXPY(A[1], -1.0, A[0], SAME_NONZERO_PATTERN));
+  PetscCall(MatNorm(A[1], NORM_FROBENIUS, &dK));
+  PetscCall(PetscPrintf(comm, "fast_check residual_rel_diff %.3e jacobian_rel_diff %.3e\n", (double)(dr / nr), (double)(dK / nK)));
+  for (PetscInt k = 0; k < 2; ++k) {
+    PetscCall(VecDestroy(&F[k]));
+    PetscCall(MatDestroy(&A[k]));
+  }
+  PetscCall(DMRestoreLocalVector(s->dm, &locF));
+  PetscCall(SPProblemRestoreLocalState(s->problem, &locX));
+  PetscCall(DMRestoreGlobalVector(s->dm, &X));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -37,7 +130,7 @@ static PetscErrorCode LinearParts(SPSolver s)
     PetscCall(VecZeroEntries(zero));
     PetscCall(SPProblemGetLocalState(s->problem, zero, &locX));
     PetscCall(MatDuplicate(s->J, MAT_DO_NOT_COPY_VALUES, &s->K));
-    PetscCall(BulkJacobianFE(s, locX, s->K));
+    PetscCall(BulkJacobian(s, locX, s->K));
     PetscCall(SPProblemRestoreLocalState(s->problem, &locX));
     PetscCall(DMRestoreGlobalVector(s->dm, &zero));
     PetscCall(VecDuplicate(s->r, &s->r0));
@@ -49,7 +142,7 @@ static PetscErrorCode LinearParts(SPSolver s)
     PetscCall(SPProblemGetLocalState(s->problem, zero, &locX));
     PetscCall(DMGetLocalVector(s->dm, &locF));
     PetscCall(VecZeroEntries(locF));
-    PetscCall(BulkResidualFE(s, locX, locF));
+    PetscCall(BulkResidual(s, locX, locF));
     PetscCall(VecZeroEntries(s->r0));
     PetscCall(DMLocalToGlobal(s->dm, locF, ADD_VALUES, s->r0));
     PetscCall(DMRestoreLocalVector(s->dm, &locF));
@@ -71,7 +164,7 @@ static PetscErrorCode FormFunction(SNES snes, Vec X, Vec F, void *ctx)
   PetscCall(SPProblemGetLocalState(s->problem, X, &locX));
   PetscCall(DMGetLocalVector(s->dm, &locF));
   PetscCall(VecZeroEntries(locF));
-  if (!s->reuse) PetscCall(BulkResidualFE(s, locX, locF));
+  if (!s->reuse) PetscCall(BulkResidual(s, locX, locF));
   if (on) {
     PetscCall(PetscLogEventBegin(s->log->contactAssembly, 0, 0, 0, 0));
     PetscCall(SPContactAddResidual(s->contact, locX, locF));
@@ -105,7 +198,7 @@ static PetscErrorCode FormJacobian(SNES snes, Vec X, Mat J, Mat P, void *ctx)
     PetscCall(PetscLogEventBegin(s->log->bulkJacobian, 0, 0, 0, 0));
     PetscCall(MatCopy(s->K, P, SAME_NONZERO_PATTERN));
     PetscCall(PetscLogEventEnd(s->log->bulkJacobian, 0, 0, 0, 0));
-  } else PetscCall(BulkJacobianFE(s, locX, P));
+  } else PetscCall(BulkJacobian(s, locX, P));
   PetscCall(SPContactIsActive(s->contact, &on));
   if (on) {
     PetscCall(PetscLogEventBegin(s->log->contactAssembly, 0, 0, 0, 0));
@@ -191,7 +284,6 @@ PetscErrorCode SPSolverCreate(DM dm, SPProblem problem, SPContact contact, SPLog
   SPSolver     s;
   KSP          ksp;
   PC           pc;
-  MatNullSpace nsp;
 
   PetscFunctionBeginUser;
   PetscCall(PetscNew(&s));
@@ -200,14 +292,9 @@ PetscErrorCode SPSolverCreate(DM dm, SPProblem problem, SPContact contact, SPLog
   s->contact = contact;
   s->log     = log;
   PetscCall(DMCreateGlobalVector(dm, &s->r));
-  PetscCall(DMCreateMatrix(dm, &s->J));
-  PetscCall(DMPlexCreateRigidBody(dm, 0, &nsp)); /* on the dof layout: constrained dofs excluded */
-  PetscCall(MatSetNearNullSpace(s->J, nsp));
-  PetscCall(MatNullSpaceDestroy(&nsp));
   PetscCall(SNESCreate(PetscObjectComm((PetscObject)dm), &s->snes));
   PetscCall(SNESSetDM(s->snes, dm));
   PetscCall(SNESSetFunction(s->snes, s->r, FormFunction, s));
-  PetscCall(SNESSetJacobian(s->snes, s->J, s->J, FormJacobian, s));
   PetscCall(SNESSetConvergenceTest(s->snes, Converged, s, NULL));
   PetscCall(SNESSetTolerances(s->snes, 1e-12, 1e-9, PETSC_DEFAULT, 50, PETSC_DEFAULT));
   /* a load-controlled body touching at one point legitimately raises |F| at first */
@@ -227,16 +314,40 @@ PetscErrorCode SPSolverCreate(DM dm, SPProblem problem, SPContact contact, SPLog
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The system matrix (one function: see SPMatrixCreate for extra couplings) and its near-null space */
+static PetscErrorCode SetUpMatrix(SPSolver s, PetscBool prealloc)
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(s->log->matCreate, 0, 0, 0, 0));
+  PetscCall(SPMatrixCreate(s->dm, prealloc, 0, NULL, &s->J));
+  PetscCall(PetscLogEventEnd(s->log->matCreate, 0, 0, 0, 0));
+  PetscCall(PetscLogEventBegin(s->log->nearNullSpace, 0, 0, 0, 0));
+  PetscCall(SPMatrixSetRigidBodyModes(s->dm, prealloc, s->J));
+  PetscCall(PetscLogEventEnd(s->log->nearNullSpace, 0, 0, 0, 0));
+  PetscCall(SNESSetJacobian(s->snes, s->J, s->J, FormJacobian, s));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode SPSolverSetFromOptions(SPSolver s)
 {
   SNESLineSearch ls;
   PetscBool      on;
+  PetscBool      fast = PETSC_TRUE, prealloc = PETSC_TRUE;
 
   PetscFunctionBeginUser;
   PetscCall(SPProblemIsLinear(s->problem, &s->reuse));
   PetscOptionsBegin(PetscObjectComm((PetscObject)s->dm), NULL, "Solver options", "spcontact");
-  PetscCall(PetscOptionsBool("-solver_linear_reuse", "Linear material: assemble the bulk stiffness K once and use r(u) = r0(load) + K u (false: PetscFE residual/Jacobian every time)", "SPSolverSetFromOptions", s->reuse, &s->reuse, NULL));
+  PetscCall(PetscOptionsBool("-solver_linear_reuse", "Linear material: assemble the bulk stiffness K once and use r(u) = r0(load) + K u (false: bulk residual/Jacobian every time)", "SPSolverSetFromOptions", s->reuse, &s->reuse, NULL));
+  PetscCall(PetscOptionsBool("-solver_fast_bulk", "Element-level isotropic elasticity for P1/Q1 cells instead of PetscFE where it applies (false: always PetscFE)", "SPSolverSetFromOptions", fast, &fast, NULL));
+  PetscCall(PetscOptionsBool("-solver_check_fast", "Verification: compare the fast and the PetscFE bulk residual/Jacobian (and the matrix pattern with DMCreateMatrix's) once, print the relative differences", "SPSolverSetFromOptions", s->checkFast, &s->checkFast, NULL));
+  PetscCall(PetscOptionsBool("-solver_fast_prealloc", "First-order mesh: preallocate the matrix from vertex adjacency and build the rigid-body modes from vertex coordinates (false: DMCreateMatrix, DMPlexCreateRigidBody)", "SPSolverSetFromOptions", prealloc, &prealloc, NULL));
   PetscOptionsEnd();
+  PetscCall(SetUpMatrix(s, prealloc));
+  if (fast) {
+    PetscCall(PetscLogEventBegin(s->log->fastSetUp, 0, 0, 0, 0));
+    PetscCall(SPFastElasticCreate(s->dm, s->problem, &s->fast));
+    PetscCall(PetscLogEventEnd(s->log->fastSetUp, 0, 0, 0, 0));
+  }
   /* Full Newton steps: the penalty residual is piecewise linear (semismooth Newton); backtracking
      on |F| crawls there, adding one active point per iteration. */
   PetscCall(SNESGetLineSearch(s->snes, &ls));
@@ -281,6 +392,10 @@ PetscErrorCode SPSolverSolve(SPSolver s, Vec u, SNESConvergedReason *reason)
   PetscBool on;
 
   PetscFunctionBeginUser;
+  if (s->checkFast) {
+    PetscCall(CheckFast(s));
+    s->checkFast = PETSC_FALSE;
+  }
   PetscCall(SPContactIsActive(s->contact, &on));
   PetscCall(NewtonSolve(s, u, reason));
   if (!on || !s->contact->entry->augments) PetscFunctionReturn(PETSC_SUCCESS);
@@ -306,6 +421,13 @@ PetscErrorCode SPSolverGetCounts(SPSolver s, PetscInt *newton, PetscInt *linear)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+PetscErrorCode SPSolverGetBulkOperator(SPSolver s, const char **name)
+{
+  PetscFunctionBeginUser;
+  *name = s->fast ? "fast" : "petscfe";
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode SPSolverDestroy(SPSolver *solver)
 {
   PetscFunctionBeginUser;
@@ -315,6 +437,7 @@ PetscErrorCode SPSolverDestroy(SPSolver *solver)
   PetscCall(MatDestroy(&(*solver)->K));
   PetscCall(VecDestroy(&(*solver)->r0));
   PetscCall(VecDestroy(&(*solver)->r));
+  PetscCall(SPFastElasticDestroy(&(*solver)->fast));
   PetscCall(PetscFree(*solver));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -45,6 +45,32 @@ static inline void SPElasticG3(SP_KERNEL_ARGS, PetscReal u_tShift, const PetscRe
           g3[((c * dim + e) * dim + d) * dim + f] = mu * ((c == e && d == f) + (c == f && d == e)) + lambda * (c == d && e == f);
 }
 
+/* Element stiffness of the same law for one cell, with the structure of B^T D B written out:
+   K[(a,i),(b,j)] = sum_q wdetJ_q (lambda dNa_i dNb_j + mu dNa_j dNb_i + mu delta_ij dNa.dNb),
+   dof (a,i) = a * dim + i (node-major, as the closure). G: physical gradients of the nb scalar
+   basis functions at the nq points, G[(q * nb + a) * dim + i]. K is (nb dim)^2, row-major. */
+static inline void SPElasticElementStiffness(PetscInt dim, PetscInt nb, PetscInt nq, const PetscReal G[], const PetscReal wdetJ[], PetscReal lambda, PetscReal mu, PetscScalar K[])
+{
+  const PetscInt n = nb * dim;
+  for (PetscInt k = 0; k < n * n; ++k) K[k] = 0.0;
+  for (PetscInt q = 0; q < nq; ++q) {
+    const PetscReal *Gq = &G[q * nb * dim], l = lambda * wdetJ[q], m = mu * wdetJ[q];
+    for (PetscInt a = 0; a < nb; ++a) {
+      const PetscReal *Ga = &Gq[a * dim];
+      for (PetscInt b = 0; b < nb; ++b) {
+        const PetscReal *Gb  = &Gq[b * dim];
+        PetscReal        dot = 0.0;
+        for (PetscInt d = 0; d < dim; ++d) dot += Ga[d] * Gb[d];
+        for (PetscInt i = 0; i < dim; ++i) {
+          PetscScalar *Krow = &K[(a * dim + i) * n + b * dim];
+          for (PetscInt j = 0; j < dim; ++j) Krow[j] += l * Ga[i] * Gb[j] + m * Ga[j] * Gb[i];
+          Krow[i] += m * dot;
+        }
+      }
+    }
+  }
+}
+
 /* Manufactured solution u = A phi(x) e, phi = prod_d sin(pi x_d), e_c = c + 1. Zero on the unit box. */
 static inline PetscReal SPMMSPhiHessian(PetscInt dim, const PetscReal x[], PetscInt i, PetscInt j)
 {
