@@ -120,7 +120,6 @@ unknown master value|input/patch_4_5.opts|-contact_pair_0_master_values 42
 unknown pair label|input/patch_4_5.opts|-contact_pair_0_label nosuch
 unknown tangent|input/patch_4_5.opts|-contact_pair_tangent nosuch
 two-pass without pair|input/block2d.opts|-contact_two_pass
-pairs in 3D|input/block3d.opts|-contact_pair_0_slave_values 1 -contact_pair_0_master_values 2
 CASES
   return $rc
 }
