@@ -90,7 +90,7 @@ pairs_invariance() { # pairs_invariance OPTS [extra]
   for np in 2 3; do
     echo "-- 1 rank vs $np ranks (remote elements $(sval "$CASE_DIR/np$np.txt" contact_remote_elements), mallocs $(sval "$CASE_DIR/np$np.txt" contact_jacobian_mallocs), exchange time $(sval "$CASE_DIR/np$np.txt" contact_exchange_time) s)"
     assert_eq converged "$(sval "$CASE_DIR/np$np.txt" converged)" yes || rc=1
-    same_summary "$CASE_DIR/np1.txt" "$CASE_DIR/np$np.txt" 1e-8 contact_force_y contact_peak_pressure contact_radius contact_active_points displacement_max contact_points || rc=1
+    same_summary "$CASE_DIR/np1.txt" "$CASE_DIR/np$np.txt" 1e-8 contact_force_y contact_force_z contact_peak_pressure contact_radius contact_active_points displacement_max contact_points || rc=1
     assert_ge remote_elements "$(sval "$CASE_DIR/np$np.txt" contact_remote_elements)" 1 || rc=1
     assert_close jacobian_mallocs "$(sval "$CASE_DIR/np$np.txt" contact_jacobian_mallocs)" 0 0 0 || rc=1
   done
