@@ -1,23 +1,31 @@
-/* Contact pairs (deformable-deformable contact, 2D node-to-segment): pair options, the master
-   facet table, its exchange between ranks at every evaluation, and the closest-point search.
+/* Contact pairs (deformable-deformable contact: 2D node-to-segment, 3D node-to-facet on linear
+   triangles and bilinear quadrilaterals): pair options, the master facet table, its exchange
+   between ranks at every evaluation, and the closest-point search. One code path for 2D and 3D;
+   the geometry kernels are kernels/contact-pair.h (segments, dispatch) and kernels/contact-facet.h
+   (triangles: closed-form projection; quads: Newton projection with a Gauss-Newton fallback).
 
    Exchange: every rank owns the master facets of its part. At every evaluation the ranks share
-   their slave bounding boxes (deformed, inflated by twice the largest slave/master facet size),
+   their slave bounding boxes (deformed, inflated by twice the largest slave/master facet edge),
    and each rank sends its owned master facets (deformed coordinates, global dofs, contact-point
    numbers) to the ranks whose box they meet (MPI_Alltoallv). -contact_pair_exchange_all sends to
    every rank (the whole-surface gather, for comparison). The cost is printed in the summary
-   (contact_exchange_time, contact_exchange_facets_per_rank). The free ends of the master
+   (contact_exchange_time, contact_exchange_facets_per_rank). The free sides of the master
    surfaces come from a one-time gather of the whole table at set-up.
 
-   Projection rule (documented in the README): among the master segments of the point's pairs, the
-   one whose closest point (parameter clamped to [0,1]) is nearest wins; on a tie (a shared
-   vertex) the segment whose unclamped parameter lies inside [0,1], or is closer to it, wins, then
-   the segment with the lexicographically smaller reference midpoint (independent of the
-   partition). The gap and normal come from the winning segment with the UNCLAMPED parameter
-   (an extended segment), which keeps g continuous across a flat junction and makes the dead zone
-   at a convex corner belong to one segment. A projection beyond a free end of the master surface
-   (a vertex of one master segment only) by more than SP_PAIR_END_TOL of the segment length is off
-   the surface: the point has no contact element. */
+   Projection rule (documented in the README). A facet's sides are its end vertices (2D) or its
+   edges (3D, side s joins vertices s and s+1). Among the master facets of the point's pairs, the
+   one whose CLAMPED closest point is nearest wins (2D: parameter clamped to [0,1]; 3D: the
+   projection itself if it lies inside the facet, else the nearest point of its boundary edges).
+   On a tie (within 1e-10 relative: a shared vertex or edge) the facet whose unclamped projection
+   lies inside it, or less far outside (excess: max over sides of how far the projection lies
+   beyond the side, in parameter units: segment [0,1], triangle barycentric, quad [-1,1]/2), wins,
+   then the facet with the lexicographically smaller reference centroid (independent of the
+   partition). The gap and normal come from the winning facet at its UNCLAMPED projection (an
+   extended facet), which keeps g continuous across flat junctions and makes the dead zone at a
+   convex edge or corner belong to one facet. A projection beyond a free side of the master surface
+   (a vertex/edge of one master facet only, within the pair) by more than SP_PAIR_END_TOL (in the
+   same parameter units) is off the surface: the point has no contact element. A quad facet whose
+   projection fails (see kernels/contact-facet.h) is not a candidate. */
 #include <spcontact-impl.h>
 
 #define SP_PAIR_END_TOL 1e-2
@@ -34,7 +42,7 @@ static PetscErrorCode PairSetFromOptions(MPI_Comm comm, PetscInt k, SPPair *p, P
   PetscCall(PetscMemzero(p, sizeof(*p)));
   PetscCall(PetscStrcpy(p->label, "Face Sets"));
   p->nslave = p->nmaster = SP_MAX_VALUES;
-  PetscOptionsBegin(comm, prefix, "Contact pair (deformable-deformable, node-to-segment)", "spcontact");
+  PetscOptionsBegin(comm, prefix, "Contact pair (deformable-deformable, node-to-segment in 2D, node-to-facet in 3D)", "spcontact");
   PetscCall(PetscOptionsString("-label", "Mesh label of the pair's two surfaces", "SPContactPairsSetFromOptions", p->label, p->label, sizeof(p->label), &hasL));
   PetscCall(PetscOptionsIntArray("-slave_values", "Label values of the slave surface (its vertices are contact points)", "SPContactPairsSetFromOptions", p->slave, &p->nslave, &hasS));
   PetscCall(PetscOptionsIntArray("-master_values", "Label values of the master surface (its facets are projected on)", "SPContactPairsSetFromOptions", p->master, &p->nmaster, &hasM));
@@ -412,6 +420,19 @@ static PetscBool Better(const SPContact c, PetscReal d, PetscReal e, PetscInt f,
   return PETSC_FALSE;
 }
 
+/* Lower bound of the distance from x to facet m (its deformed bounding box) */
+static PetscReal BoxDistance(const SPMasterFacet *m, PetscInt dim, const PetscReal x[])
+{
+  PetscReal d2 = 0.0;
+  for (PetscInt k = 0; k < dim; ++k) {
+    PetscReal lo = PETSC_MAX_REAL, hi = -PETSC_MAX_REAL, e;
+    for (PetscInt a = 0; a < m->nv; ++a) lo = PetscMin(lo, m->x[a * dim + k]), hi = PetscMax(hi, m->x[a * dim + k]);
+    e = x[k] < lo ? lo - x[k] : (x[k] > hi ? x[k] - hi : 0.0);
+    d2 += e * e;
+  }
+  return PetscSqrtReal(d2);
+}
+
 /* Closest-point projection of point i (deformed position c->xs) onto the master facets of its
    pairs: facet (or SP_ELEM_NONE), parameter, gap and normal (see the rule at the top) */
 PetscErrorCode SPContactPairsProject(SPContact c, PetscInt i, PetscInt *facet, PetscReal *xi, PetscReal *g, PetscReal n[])
@@ -426,6 +447,7 @@ PetscErrorCode SPContactPairsProject(SPContact c, PetscInt i, PetscInt *facet, P
     const SPMasterFacet *m = &c->mf[f];
     PetscReal            t[2], d, e;
     if (!(c->pairMask[i] & ((PetscInt)1 << m->pair))) continue;
+    if (best >= 0 && BoxDistance(m, c->dim, x) > db + 1e-9 * (1.0 + db)) continue; /* cannot win (Better's tolerance is 1e-10) */
     if (!SPPairCandidate(c->dim, m->nv, m->x, x, t, &d, &e)) continue;
     if (Better(c, d, e, f, db, eb, best)) best = f, db = d, eb = e, xb[0] = t[0], xb[1] = t[1];
   }

@@ -1,5 +1,5 @@
-# Contact pairs (deformable-deformable, 2D node-to-segment): B5 patch test one-pass/two-pass with
-# every method, B6 two-body Hertz, frictionless sliding across segment junctions, the tangent at a
+# Contact pairs (deformable-deformable, 2D node-to-segment; 3D: 61-pairs3d.sh): B5 patch test
+# one-pass/two-pass with every method, B6 two-body Hertz, frictionless sliding across segment junctions, the tangent at a
 # penetrated and slid state, parallel invariance with the interface cut by the partition, bad input.
 
 # max |p - q| / q over all contact points, from the contact-points CSV

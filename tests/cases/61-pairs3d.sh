@@ -63,3 +63,20 @@ test_pairs3d_jacobian_slid_tet() { pairs3d_jacobian slide3d_tet; }
 # have master facets owned by another rank (contact_remote_elements > 0); no Jacobian mallocs.
 test_pairs3d_patch_parallel_invariance() { pairs_invariance input/patch3d_4_5.opts -contact_two_pass; }
 test_pairs3d_slide_tet_parallel_invariance() { pairs_invariance input/slide3d.opts -mesh_file build/mesh/slide3d_tet.msh -load_steps 2; }
+
+# Frictionless finite sliding in 3D under displacement control (input/slide3d.opts, hexahedra,
+# 4 load steps, shifted): every step converges with penetration <= gap_tol; slave and master
+# contact forces balance to round-off in every component.
+test_pairs3d_slide_hex() {
+  local out=$CASE_DIR/run.txt rc=0
+  spc "$out" 1 -options_file input/slide3d.opts -load_steps 4 -output_dir "$CASE_DIR" || return 1
+  assert_eq converged "$(sval "$out" converged)" yes || rc=1
+  grep '^contact_step' "$out"
+  [ "$(grep -c '^contact_step' "$out")" -eq 4 ] || { echo "expected 4 load steps"; rc=1; }
+  assert_le max_penetration_every_step "$(awk '/^contact_step/ { if ($12 > m) m = $12 } END { printf "%.3e", m }' "$out")" 1e-10 || rc=1
+  local fz; fz=$(sval "$out" contact_force_z)
+  for k in x y z; do
+    assert_le "force_balance_$k" "$(awk -v a="$(sval "$out" contact_force_$k)" -v b="$(sval "$out" contact_force_master_$k)" -v f="$fz" 'BEGIN { d = (a + b) / f; if (d < 0) d = -d; printf "%.3e", d }')" 1e-10 || rc=1
+  done
+  return $rc
+}
