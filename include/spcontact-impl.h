@@ -75,7 +75,7 @@ typedef struct {
   PetscInt  vid[SP_FACET_MAXV];         /* global vertex numbers (junctions, free ends) */
   PetscInt  cp[SP_FACET_MAXV];          /* global contact-point number of each vertex, -1 if none */
   PetscInt  dof[SP_FACET_MAXV * 3];     /* global displacement dofs; constrained: -(i+1) */
-  PetscBool freeEnd[SP_FACET_MAXV];     /* vertex belongs to no other master facet of the pair */
+  PetscBool freeSide[SP_FACET_MAXV];    /* side s (2D: vertex s; 3D: edge s -> s+1) belongs to no other master facet of the pair */
   PetscReal X[SP_FACET_MAXV * 3];       /* reference coordinates */
   PetscReal x[SP_FACET_MAXV * 3];       /* deformed coordinates at the last evaluation */
 } SPMasterFacet;
@@ -131,7 +131,7 @@ struct _n_SPContact {
   PetscInt       *pairMask;        /* per point: bit k set = slave of pair k */
   PetscBool      *onObstacle, *primary; /* slave of the obstacles; counts in the force */
   PetscInt       *facet;           /* per point: master facet, SP_ELEM_OBSTACLE or SP_ELEM_NONE */
-  PetscReal      *xi, *xs;         /* projection parameter, deformed slave position (dim) */
+  PetscReal      *xi, *xs;         /* projection parameters (2 per point; 2D uses the first), deformed slave position (dim) */
   PetscReal      *press, *fpt;     /* recovered pressure, nodal contact force (dim) */
   PetscInt       *known;           /* per point: master facets already in the Jacobian pattern */
   Vec             Fc, fvec;        /* global contact residual; nodal forces at contact points */

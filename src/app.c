@@ -154,7 +154,7 @@ PetscErrorCode SPAppSummary(SPApp a)
     PetscCall(PetscViewerASCIIPrintf(v, "contact_gap_error %.10e\n", (double)st.gapError));
     PetscCall(PetscViewerASCIIPrintf(v, "contact_force_x %.12e\ncontact_force_y %.12e\ncontact_force_z %.12e\n", (double)st.force[0], (double)st.force[1], (double)st.force[2]));
     if (a->contact->npair) {
-      PetscCall(PetscViewerASCIIPrintf(v, "contact_force_master_x %.12e\ncontact_force_master_y %.12e\n", (double)st.forceMaster[0], (double)st.forceMaster[1]));
+      PetscCall(PetscViewerASCIIPrintf(v, "contact_force_master_x %.12e\ncontact_force_master_y %.12e\ncontact_force_master_z %.12e\n", (double)st.forceMaster[0], (double)st.forceMaster[1], (double)st.forceMaster[2]));
       PetscCall(PetscViewerASCIIPrintf(v, "contact_remote_elements %" PetscInt_FMT "\n", st.remoteElements));
     }
     PetscCall(PetscViewerASCIIPrintf(v, "contact_peak_pressure %.12e\ncontact_radius %.10e\n", (double)st.peakPressure, (double)st.contactRadius));

@@ -1,23 +1,31 @@
-/* Contact pairs (deformable-deformable contact, 2D node-to-segment): pair options, the master
-   facet table, its exchange between ranks at every evaluation, and the closest-point search.
+/* Contact pairs (deformable-deformable contact: 2D node-to-segment, 3D node-to-facet on linear
+   triangles and bilinear quadrilaterals): pair options, the master facet table, its exchange
+   between ranks at every evaluation, and the closest-point search. One code path for 2D and 3D;
+   the geometry kernels are kernels/contact-pair.h (segments, dispatch) and kernels/contact-facet.h
+   (triangles: closed-form projection; quads: Newton projection with a Gauss-Newton fallback).
 
    Exchange: every rank owns the master facets of its part. At every evaluation the ranks share
-   their slave bounding boxes (deformed, inflated by twice the largest slave/master facet size),
+   their slave bounding boxes (deformed, inflated by twice the largest slave/master facet edge),
    and each rank sends its owned master facets (deformed coordinates, global dofs, contact-point
    numbers) to the ranks whose box they meet (MPI_Alltoallv). -contact_pair_exchange_all sends to
    every rank (the whole-surface gather, for comparison). The cost is printed in the summary
-   (contact_exchange_time, contact_exchange_facets_per_rank). The free ends of the master
+   (contact_exchange_time, contact_exchange_facets_per_rank). The free sides of the master
    surfaces come from a one-time gather of the whole table at set-up.
 
-   Projection rule (documented in the README): among the master segments of the point's pairs, the
-   one whose closest point (parameter clamped to [0,1]) is nearest wins; on a tie (a shared
-   vertex) the segment whose unclamped parameter lies inside [0,1], or is closer to it, wins, then
-   the segment with the lexicographically smaller reference midpoint (independent of the
-   partition). The gap and normal come from the winning segment with the UNCLAMPED parameter
-   (an extended segment), which keeps g continuous across a flat junction and makes the dead zone
-   at a convex corner belong to one segment. A projection beyond a free end of the master surface
-   (a vertex of one master segment only) by more than SP_PAIR_END_TOL of the segment length is off
-   the surface: the point has no contact element. */
+   Projection rule (documented in the README). A facet's sides are its end vertices (2D) or its
+   edges (3D, side s joins vertices s and s+1). Among the master facets of the point's pairs, the
+   one whose CLAMPED closest point is nearest wins (2D: parameter clamped to [0,1]; 3D: the
+   projection itself if it lies inside the facet, else the nearest point of its boundary edges).
+   On a tie (within 1e-10 relative: a shared vertex or edge) the facet whose unclamped projection
+   lies inside it, or less far outside (excess: max over sides of how far the projection lies
+   beyond the side, in parameter units: segment [0,1], triangle barycentric, quad [-1,1]/2), wins,
+   then the facet with the lexicographically smaller reference centroid (independent of the
+   partition). The gap and normal come from the winning facet at its UNCLAMPED projection (an
+   extended facet), which keeps g continuous across flat junctions and makes the dead zone at a
+   convex edge or corner belong to one facet. A projection beyond a free side of the master surface
+   (a vertex/edge of one master facet only, within the pair) by more than SP_PAIR_END_TOL (in the
+   same parameter units) is off the surface: the point has no contact element. A quad facet whose
+   projection fails (see kernels/contact-facet.h) is not a candidate. */
 #include <spcontact-impl.h>
 
 #define SP_PAIR_END_TOL 1e-2
@@ -34,7 +42,7 @@ static PetscErrorCode PairSetFromOptions(MPI_Comm comm, PetscInt k, SPPair *p, P
   PetscCall(PetscMemzero(p, sizeof(*p)));
   PetscCall(PetscStrcpy(p->label, "Face Sets"));
   p->nslave = p->nmaster = SP_MAX_VALUES;
-  PetscOptionsBegin(comm, prefix, "Contact pair (deformable-deformable, node-to-segment)", "spcontact");
+  PetscOptionsBegin(comm, prefix, "Contact pair (deformable-deformable, node-to-segment in 2D, node-to-facet in 3D)", "spcontact");
   PetscCall(PetscOptionsString("-label", "Mesh label of the pair's two surfaces", "SPContactPairsSetFromOptions", p->label, p->label, sizeof(p->label), &hasL));
   PetscCall(PetscOptionsIntArray("-slave_values", "Label values of the slave surface (its vertices are contact points)", "SPContactPairsSetFromOptions", p->slave, &p->nslave, &hasS));
   PetscCall(PetscOptionsIntArray("-master_values", "Label values of the master surface (its facets are projected on)", "SPContactPairsSetFromOptions", p->master, &p->nmaster, &hasM));
@@ -76,7 +84,6 @@ PetscErrorCode SPContactPairsSetFromOptions(SPContact c)
   }
   c->npair = c->nuser;
   PetscCheck(c->nuser > 0 || !c->twoPass, comm, PETSC_ERR_USER_INPUT, "-contact_two_pass needs a contact pair (-contact_pair_0_slave_values, -contact_pair_0_master_values)");
-  PetscCheck(c->nuser == 0 || c->dim == 2, comm, PETSC_ERR_USER_INPUT, "contact pairs are implemented in 2D only (node-to-segment); 3D node-to-facet contact is not implemented yet: use rigid obstacles in 3D");
   if (c->twoPass)
     for (PetscInt k = 0; k < c->nuser; ++k) {
       SPPair *m = &c->pair[c->npair++];
@@ -95,7 +102,7 @@ static PetscErrorCode OrientFacet(DM dm, PetscInt f, PetscInt dim, PetscInt nv, 
 {
   const PetscInt *supp;
   PetscInt        ns, cnv, cvert[8];
-  PetscReal       cx[8 * 3], xc[3] = {0, 0, 0}, g, n[3], xi, N[6];
+  PetscReal       cx[8 * 3], xc[3] = {0, 0, 0}, xf[3] = {0, 0, 0}, n[3];
 
   PetscFunctionBeginUser;
   PetscCall(DMPlexGetSupportSize(dm, f, &ns));
@@ -115,8 +122,11 @@ static PetscErrorCode OrientFacet(DM dm, PetscInt f, PetscInt dim, PetscInt nv, 
     PetscCall(SPContactFacetVertices(dm, cvert[a], &nv1, v1, &cx[a * dim]));
     for (PetscInt k = 0; k < dim; ++k) xc[k] += cx[a * dim + k] / cnv;
   }
-  SPSegmentGap(xc, &X[0], &X[dim], &g, n, &xi, N, NULL);
-  if (g > 0.0) { /* the cell centroid lies on the normal side: reverse */
+  for (PetscInt a = 0; a < nv; ++a)
+    for (PetscInt k = 0; k < dim; ++k) xf[k] += X[a * dim + k] / nv;
+  for (PetscInt k = 0; k < dim; ++k) xc[k] -= xf[k];
+  SPPairCentreNormal(dim, nv, X, n);
+  if (SPDot(dim, xc, n) > 0.0) { /* the cell centroid lies on the normal side: reverse */
     for (PetscInt a = 0; a < nv / 2; ++a) {
       const PetscInt b = nv - 1 - a, tv = vert[a];
       vert[a] = vert[b], vert[b] = tv;
@@ -204,20 +214,30 @@ static PetscErrorCode OwnedFacets(SPContact c, PetscInt *nown, SPMasterFacet **o
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Free ends: vertices of one master facet only (within the same pair) */
-static PetscErrorCode MarkFreeEnds(SPContact c)
+/* Key of side s of facet m: 2D the vertex s, 3D the edge (s, s+1) (unordered), with the pair */
+static PetscInt64 SideKey(const SPMasterFacet *m, PetscInt dim, PetscInt s, PetscInt64 nvg)
 {
-  PetscInt64 *key;
+  const PetscInt64 v0 = m->vid[s], v1 = dim == 2 ? v0 : m->vid[(s + 1) % m->nv];
+  return (PetscMin(v0, v1) * nvg + PetscMax(v0, v1)) * (2 * SP_MAX_PAIRS) + m->pair;
+}
+
+/* Free sides: sides (2D: end vertices, 3D: edges) of one master facet only, within the same pair */
+static PetscErrorCode MarkFreeSides(SPContact c)
+{
+  PetscInt64 *key, nvg = 1;
   PetscInt    nk = 0;
 
   PetscFunctionBeginUser;
+  for (PetscInt f = 0; f < c->nmf; ++f)
+    for (PetscInt a = 0; a < c->mf[f].nv; ++a) nvg = PetscMax(nvg, (PetscInt64)c->mf[f].vid[a] + 1);
+  PetscCheck(nvg < ((PetscInt64)1 << 29), PETSC_COMM_SELF, PETSC_ERR_SUP, "contact pairs: too many mesh points for the free-side keys");
   PetscCall(PetscMalloc1(c->nmf * SP_FACET_MAXV + 1, &key));
   for (PetscInt f = 0; f < c->nmf; ++f)
-    for (PetscInt a = 0; a < c->mf[f].nv; ++a) key[nk++] = (PetscInt64)c->mf[f].vid[a] * (2 * SP_MAX_PAIRS) + c->mf[f].pair;
+    for (PetscInt a = 0; a < c->mf[f].nv; ++a) key[nk++] = SideKey(&c->mf[f], c->dim, a, nvg);
   PetscCall(PetscSortInt64(nk, key));
   for (PetscInt f = 0; f < c->nmf; ++f)
     for (PetscInt a = 0; a < c->mf[f].nv; ++a) {
-      const PetscInt64 k = (PetscInt64)c->mf[f].vid[a] * (2 * SP_MAX_PAIRS) + c->mf[f].pair;
+      const PetscInt64 k = SideKey(&c->mf[f], c->dim, a, nvg);
       PetscInt         lo = 0, hi = nk, cnt = 0;
       while (lo < hi) { /* first index with key >= k */
         const PetscInt mid = (lo + hi) / 2;
@@ -225,7 +245,7 @@ static PetscErrorCode MarkFreeEnds(SPContact c)
         else hi = mid;
       }
       while (lo + cnt < nk && key[lo + cnt] == k) cnt++;
-      c->mf[f].freeEnd[a] = cnt == 1 ? PETSC_TRUE : PETSC_FALSE;
+      c->mf[f].freeSide[a] = cnt == 1 ? PETSC_TRUE : PETSC_FALSE;
     }
   PetscCall(PetscFree(key));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -267,12 +287,16 @@ static PetscErrorCode SetUpStatic(SPContact c)
   PetscCall(PetscCalloc1(c->mfCap, &c->mf));
   for (PetscMPIInt r = 0; r < size; ++r) cb[r] = cnt[r] * (PetscMPIInt)sizeof(SPMasterFacet), db[r] = dsp[r] * (PetscMPIInt)sizeof(SPMasterFacet);
   PetscCallMPI(MPI_Allgatherv(c->own, mine * (PetscMPIInt)sizeof(SPMasterFacet), MPI_BYTE, c->mf, cb, db, MPI_BYTE, comm));
-  PetscCall(MarkFreeEnds(c));
+  PetscCall(MarkFreeSides(c));
   for (PetscInt j = 0; j < c->nmfOwned; ++j) c->own[j] = c->mf[c->mfStart + j];
   for (PetscInt f = 0; f < c->nmf; ++f) {
-    PetscReal t[3];
-    for (PetscInt k = 0; k < c->dim; ++k) t[k] = c->mf[f].X[c->dim + k] - c->mf[f].X[k];
-    hmax = PetscMax(hmax, SPNorm(c->dim, t));
+    const SPMasterFacet *m = &c->mf[f];
+    for (PetscInt a = 0; a < m->nv; ++a) {
+      const PetscInt b = (a + 1) % m->nv;
+      PetscReal      t[3];
+      for (PetscInt k = 0; k < c->dim; ++k) t[k] = m->X[b * c->dim + k] - m->X[a * c->dim + k];
+      hmax = PetscMax(hmax, SPNorm(c->dim, t));
+    }
   }
   for (PetscInt i = 0; i < c->n; ++i) hmax = PetscMax(hmax, c->h[i]);
   PetscCallMPI(MPI_Allreduce(&hmax, &c->margin, 1, MPIU_REAL, MPI_MAX, comm));
@@ -386,11 +410,27 @@ static PetscBool Better(const SPContact c, PetscReal d, PetscReal e, PetscInt f,
   if (d > db + tol) return PETSC_FALSE;
   if (e < eb - 1e-12) return PETSC_TRUE;
   if (e > eb + 1e-12) return PETSC_FALSE;
-  for (PetscInt k = 0; k < c->dim; ++k) { /* reference midpoints, lexicographic */
-    const PetscReal mf = c->mf[f].X[k] + c->mf[f].X[c->dim + k], mb = c->mf[fb].X[k] + c->mf[fb].X[c->dim + k];
-    if (mf != mb) return mf < mb ? PETSC_TRUE : PETSC_FALSE;
+  for (PetscInt k = 0; k < c->dim; ++k) { /* reference vertex sums (centroids), lexicographic */
+    PetscReal mf = 0.0, mb = 0.0;
+    for (PetscInt a = 0; a < c->mf[f].nv; ++a) mf += c->mf[f].X[a * c->dim + k];
+    for (PetscInt a = 0; a < c->mf[fb].nv; ++a) mb += c->mf[fb].X[a * c->dim + k];
+    if (c->mf[f].nv == c->mf[fb].nv && mf != mb) return mf < mb ? PETSC_TRUE : PETSC_FALSE;
+    if (c->mf[f].nv != c->mf[fb].nv && mf / c->mf[f].nv != mb / c->mf[fb].nv) return mf / c->mf[f].nv < mb / c->mf[fb].nv ? PETSC_TRUE : PETSC_FALSE;
   }
   return PETSC_FALSE;
+}
+
+/* Lower bound of the distance from x to facet m (its deformed bounding box) */
+static PetscReal BoxDistance(const SPMasterFacet *m, PetscInt dim, const PetscReal x[])
+{
+  PetscReal d2 = 0.0;
+  for (PetscInt k = 0; k < dim; ++k) {
+    PetscReal lo = PETSC_MAX_REAL, hi = -PETSC_MAX_REAL, e;
+    for (PetscInt a = 0; a < m->nv; ++a) lo = PetscMin(lo, m->x[a * dim + k]), hi = PetscMax(hi, m->x[a * dim + k]);
+    e = x[k] < lo ? lo - x[k] : (x[k] > hi ? x[k] - hi : 0.0);
+    d2 += e * e;
+  }
+  return PetscSqrtReal(d2);
 }
 
 /* Closest-point projection of point i (deformed position c->xs) onto the master facets of its
@@ -399,24 +439,27 @@ PetscErrorCode SPContactPairsProject(SPContact c, PetscInt i, PetscInt *facet, P
 {
   const PetscReal *x = &c->xs[i * c->dim];
   PetscInt         best = -1;
-  PetscReal        db = 0.0, eb = 0.0, xb = 0.0;
+  PetscReal        db = 0.0, eb = 0.0, xb[2] = {0.0, 0.0};
 
   PetscFunctionBeginUser;
   *facet = SP_ELEM_NONE;
   for (PetscInt f = 0; f < c->nmf; ++f) {
     const SPMasterFacet *m = &c->mf[f];
-    PetscReal            t, d, e;
+    PetscReal            t[2], d, e;
     if (!(c->pairMask[i] & ((PetscInt)1 << m->pair))) continue;
-    SPSegmentProject(x, &m->x[0], &m->x[c->dim], &t, &d);
-    e = t < 0.0 ? -t : (t > 1.0 ? t - 1.0 : 0.0);
-    if (Better(c, d, e, f, db, eb, best)) best = f, db = d, eb = e, xb = t;
+    if (best >= 0 && BoxDistance(m, c->dim, x) > db + 1e-9 * (1.0 + db)) continue; /* cannot win (Better's tolerance is 1e-10) */
+    if (!SPPairCandidate(c->dim, m->nv, m->x, x, t, &d, &e)) continue;
+    if (Better(c, d, e, f, db, eb, best)) best = f, db = d, eb = e, xb[0] = t[0], xb[1] = t[1];
   }
   if (best < 0) PetscFunctionReturn(PETSC_SUCCESS);
-  if (eb > SP_PAIR_END_TOL && c->mf[best].freeEnd[xb < 0.0 ? 0 : c->mf[best].nv - 1]) PetscFunctionReturn(PETSC_SUCCESS);
+  for (PetscInt s = 0; s < c->mf[best].nv; ++s)
+    if (c->mf[best].freeSide[s] && SPPairBeyond(c->dim, c->mf[best].nv, xb, s) > SP_PAIR_END_TOL) PetscFunctionReturn(PETSC_SUCCESS);
   {
-    PetscReal N[6];
-    SPSegmentGap(x, &c->mf[best].x[0], &c->mf[best].x[c->dim], g, n, xi, N, NULL);
+    PetscReal N[3 * (1 + SP_FACET_MAXV)];
+    SPPairGap(c->dim, c->mf[best].nv, c->mf[best].x, x, xb, g, n, N, NULL);
   }
+  xi[0]  = xb[0];
+  xi[1]  = xb[1];
   *facet = best;
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -52,7 +52,7 @@ PetscErrorCode SPContactEvaluate(SPContact c, Vec locX)
     for (PetscInt d = 0; d < c->dim; ++d) n[d] = 0.0;
     c->gap[i]   = PETSC_MAX_REAL;
     c->facet[i] = SP_ELEM_NONE;
-    if (c->pairMask[i]) PetscCall(SPContactPairsProject(c, i, &c->facet[i], &c->xi[i], &c->gap[i], n));
+    if (c->pairMask[i]) PetscCall(SPContactPairsProject(c, i, &c->facet[i], &c->xi[2 * i], &c->gap[i], n));
     if (c->onObstacle[i]) {
       PetscReal g, no[3];
       ObstacleGap(c, load, x, &g, no, Hg);
@@ -99,13 +99,13 @@ PetscErrorCode SPContactPointElement(SPContact c, PetscInt i, PetscInt *nd, Pets
     *nd = dim;
   } else {
     const SPMasterFacet *f = &c->mf[c->facet[i]];
-    PetscReal            n[3], xi;
-    PetscCheck(dim == 2 && f->nv == 2, PETSC_COMM_SELF, PETSC_ERR_SUP, "contact pairs: only 2D node-to-segment is implemented");
-    SPSegmentGap(x, &f->x[0], &f->x[2], g, n, &xi, N, Hg);
+    const PetscInt       ne = dim * (1 + f->nv);
+    PetscReal            n[3];
+    SPPairGap(dim, f->nv, f->x, x, &c->xi[2 * i], g, n, N, Hg);
     if (Hg && !SPContactPairGeometricTangent(c))
-      for (PetscInt k = 0; k < 36; ++k) Hg[k] = 0.0;
+      for (PetscInt k = 0; k < ne * ne; ++k) Hg[k] = 0.0;
     for (PetscInt k = 0; k < f->nv * dim; ++k) dofs[dim + k] = f->dof[k];
-    *nd = dim * (1 + f->nv);
+    *nd = ne;
     if (c->twoPass) *A *= 0.5; /* two-pass: each pass carries half of the point's area */
   }
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -162,7 +162,7 @@ static PetscErrorCode CollectPoints(SPContact c)
   PetscCall(PetscCalloc5(c->n * c->dim, &c->normal, c->n, &c->active, c->n, &c->activePrev, c->n, &c->inactiveCount, c->n, &c->nhist));
   PetscCall(PetscCalloc2(c->n * c->regM, &c->histS, c->n * c->regM, &c->histG));
   PetscCall(PetscCalloc5(c->n * c->dim, &c->sdof, c->n, &c->pairMask, c->n, &c->onObstacle, c->n, &c->primary, c->n, &c->facet));
-  PetscCall(PetscCalloc5(c->n, &c->xi, c->n * c->dim, &c->xs, c->n, &c->press, c->n * c->dim, &c->fpt, c->n * SP_KNOWN_FACETS, &c->known));
+  PetscCall(PetscCalloc5(2 * c->n, &c->xi, c->n * c->dim, &c->xs, c->n, &c->press, c->n * c->dim, &c->fpt, c->n * SP_KNOWN_FACETS, &c->known));
   for (PetscInt i = 0; i < c->n * SP_KNOWN_FACETS; ++i) c->known[i] = -1;
   PetscCall(DMGetCoordinatesLocal(c->dm, &coords));
   PetscCall(DMGetCoordinateSection(c->dm, &cs));
