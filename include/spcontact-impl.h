@@ -84,7 +84,7 @@ typedef struct {
 #define SP_ELEM_NONE     (-2)
 #define SP_ELEM_OBSTACLE (-1)
 #define SP_KNOWN_FACETS  16
-typedef enum { SP_PAIR_TANGENT_AUTO, SP_PAIR_TANGENT_FULL, SP_PAIR_TANGENT_FROZEN } SPPairTangent; /* master facets per point remembered as being in the Jacobian pattern */
+typedef enum { SP_TANGENT_AUTO, SP_TANGENT_FULL, SP_TANGENT_FROZEN } SPTangent; /* master facets per point remembered as being in the Jacobian pattern */
 
 struct _n_SPContact {
   DM                   dm; /* displacement DM, not owned */
@@ -116,7 +116,8 @@ struct _n_SPContact {
   PetscInt        npair, nuser; /* all pairs (mirrors included), user pairs */
   SPPair          pair[2 * SP_MAX_PAIRS];
   PetscBool       twoPass;
-  SPPairTangent   pairTangent;
+  SPTangent       tangent;
+  PetscBool       setSettled; /* the last Newton iteration of this solve left the active set unchanged */
   PetscInt        nmfAll, mfStart, nmfOwned; /* master facets: global count, this rank's first gid and count */
   SPMasterFacet  *own;             /* this rank's owned master facets */
   PetscInt       *mfVert;          /* owned master facets: local plex vertices, SP_FACET_MAXV each */
@@ -156,7 +157,7 @@ PETSC_EXTERN PetscErrorCode SPContactPairsSetUp(SPContact);
 PETSC_EXTERN PetscErrorCode SPContactPairsExchange(SPContact, const PetscScalar[]);
 PETSC_EXTERN PetscErrorCode SPContactPairsProject(SPContact, PetscInt, PetscInt *, PetscReal *, PetscReal *, PetscReal[]);
 PETSC_EXTERN PetscErrorCode SPContactPairsDestroy(SPContact);
-PETSC_EXTERN PetscBool      SPContactPairGeometricTangent(SPContact);
+PETSC_EXTERN PetscBool      SPContactGeometricTangent(SPContact);
 PETSC_EXTERN PetscErrorCode SPOutputWriteXdmf(SPOutput);
 
 /* fast-elastic.c: element-level isotropic linear elasticity on first-order cells */

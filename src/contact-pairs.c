@@ -30,7 +30,6 @@
 
 #define SP_PAIR_END_TOL 1e-2
 
-static const char *const PairTangents[] = {"auto", "full", "frozen", "SPPairTangent", "SP_PAIR_TANGENT_", NULL};
 
 static PetscErrorCode PairSetFromOptions(MPI_Comm comm, PetscInt k, SPPair *p, PetscBool *found)
 {
@@ -61,16 +60,13 @@ static PetscErrorCode PairSetFromOptions(MPI_Comm comm, PetscInt k, SPPair *p, P
 PetscErrorCode SPContactPairsSetFromOptions(SPContact c)
 {
   MPI_Comm  comm = PetscObjectComm((PetscObject)c->dm);
-  PetscBool found   = PETSC_TRUE;
-  PetscInt  tangent = (PetscInt)c->pairTangent;
+  PetscBool found = PETSC_TRUE;
 
   PetscFunctionBeginUser;
   PetscOptionsBegin(comm, NULL, "Contact pairs", "spcontact");
-  PetscCall(PetscOptionsEList("-contact_pair_tangent", "Contact pairs: second variation of the gap in the tangent: auto (once the active set is settled), full (always), frozen (never)", "SPContactPairsSetFromOptions", PairTangents, 3, PairTangents[tangent], &tangent, NULL));
   PetscCall(PetscOptionsBool("-contact_pair_exchange_all", "Contact pairs: send every master facet to every rank at each evaluation (default: only to ranks whose slave bounding box, inflated by 2 x the largest facet, they meet)", "SPContactPairsSetFromOptions", c->exchangeAll, &c->exchangeAll, NULL));
   PetscCall(PetscOptionsBool("-contact_two_pass", "Contact pairs: each surface also acts as slave of the other (mirrored pair); each pass carries half of the areas", "SPContactPairsSetFromOptions", c->twoPass, &c->twoPass, NULL));
   PetscOptionsEnd();
-  c->pairTangent = (SPPairTangent)tangent;
   for (c->nuser = 0; c->nuser < SP_MAX_PAIRS; ++c->nuser) {
     PetscCall(PairSetFromOptions(comm, c->nuser, &c->pair[c->nuser], &found));
     if (!found) break;

@@ -67,16 +67,17 @@ PetscErrorCode SPContactEvaluate(SPContact c, Vec locX)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Whether the pair tangent includes the second variation of the gap (projection and normal
-   variation). With penetrations of the order of the element size (the first iterations of a
-   load-controlled start) that part is strongly indefinite (about alpha E g/L against the bulk's E)
-   and Newton wanders; near a solution it gives quadratic convergence. auto: included once the
-   active set did not change in the last iteration. */
-PetscBool SPContactPairGeometricTangent(SPContact c)
+/* Whether the tangent includes the second variation of the gap (obstacle curvature; for pairs the
+   variation of the projection point and of the normal). With a penetration of the order of the
+   element size (the start of a load step, or a load-controlled start) that part is strongly
+   indefinite (about -A eps |g + s| / R against the bulk stiffness): CG stops and Newton wanders.
+   Near a solution it gives quadratic convergence. auto: included once a Newton iteration of the
+   current solve left the active set unchanged. */
+PetscBool SPContactGeometricTangent(SPContact c)
 {
-  if (c->pairTangent == SP_PAIR_TANGENT_FULL) return PETSC_TRUE;
-  if (c->pairTangent == SP_PAIR_TANGENT_FROZEN) return PETSC_FALSE;
-  return c->stats.activeChanged == 0 ? PETSC_TRUE : PETSC_FALSE;
+  if (c->tangent == SP_TANGENT_FULL) return PETSC_TRUE;
+  if (c->tangent == SP_TANGENT_FROZEN) return PETSC_FALSE;
+  return c->setSettled;
 }
 
 /* Contact element of point i at the last evaluated state: *nd dofs (global indices, constrained
@@ -96,13 +97,15 @@ PetscErrorCode SPContactPointElement(SPContact c, PetscInt i, PetscInt *nd, Pets
     PetscReal load, H[9];
     PetscCall(SPProblemGetLoadFactor(c->problem, &load));
     ObstacleGap(c, load, x, g, N, Hg ? Hg : H);
+    if (Hg && !SPContactGeometricTangent(c))
+      for (PetscInt k = 0; k < dim * dim; ++k) Hg[k] = 0.0;
     *nd = dim;
   } else {
     const SPMasterFacet *f = &c->mf[c->facet[i]];
     const PetscInt       ne = dim * (1 + f->nv);
     PetscReal            n[3];
     SPPairGap(dim, f->nv, f->x, x, &c->xi[2 * i], g, n, N, Hg);
-    if (Hg && !SPContactPairGeometricTangent(c))
+    if (Hg && !SPContactGeometricTangent(c))
       for (PetscInt k = 0; k < ne * ne; ++k) Hg[k] = 0.0;
     for (PetscInt k = 0; k < f->nv * dim; ++k) dofs[dim + k] = f->dof[k];
     *nd = ne;

@@ -66,6 +66,7 @@ PetscErrorCode SPContactBeginSolve(SPContact c, Vec X)
   PetscCall(VecGetArrayRead(c->shift, &s));
   PetscCall(Bookkeep(c, s, 0.0, PETSC_FALSE));
   PetscCall(VecRestoreArrayRead(c->shift, &s));
+  c->setSettled = PETSC_FALSE;
   for (PetscInt i = 0; i < c->n; ++i) c->nhist[i] = 0;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -139,6 +140,7 @@ PetscErrorCode SPContactNewtonUpdate(SPContact c, Vec W, PetscBool *changed)
       maxDs               = PetscMax(maxDs, PetscAbsReal(PetscRealPart(s[i]) - old));
     }
   PetscCall(Bookkeep(c, s, maxDs, PETSC_TRUE));
+  c->setSettled = c->stats.activeChanged == 0 ? PETSC_TRUE : PETSC_FALSE;
   PetscCall(VecRestoreArray(c->shift, &s));
   PetscCallMPI(MPI_Allreduce(&maxDs, &all, 1, MPIU_REAL, MPI_MAX, PetscObjectComm((PetscObject)c->dm)));
   *changed = all > 0.0 ? PETSC_TRUE : PETSC_FALSE;

@@ -4,6 +4,7 @@
 
 const char *const SPContactMethods[] = {"penalty", "shifted", "shifted_regression", "alm", "SPContactMethod", "SP_METHOD_", NULL};
 static const char *const ObstacleTypes[] = {"plane", "sphere", "cylinder", "SPObstacleType", "SP_OBSTACLE_", NULL};
+static const char *const Tangents[]      = {"auto", "full", "frozen", "SPTangent", "SP_TANGENT_", NULL};
 
 PetscErrorCode SPContactCreate(DM dm, SPProblem problem, SPContact *contact)
 {
@@ -61,7 +62,7 @@ static PetscErrorCode ObstacleSetFromOptions(MPI_Comm comm, PetscInt i, PetscInt
 PetscErrorCode SPContactSetFromOptions(SPContact c)
 {
   MPI_Comm  comm = PetscObjectComm((PetscObject)c->dm);
-  PetscInt  method = (PetscInt)c->method;
+  PetscInt  method = (PetscInt)c->method, tangent = (PetscInt)c->tangent;
   PetscBool setValues, setPenalty;
 
   PetscFunctionBeginUser;
@@ -77,10 +78,12 @@ PetscErrorCode SPContactSetFromOptions(SPContact c)
   PetscCall(PetscOptionsReal("-contact_step_cap", "Newton step control: scale a step so no point penetrates deeper than step_cap x h in one step (0: off)", "SPContactSetFromOptions", c->stepCap, &c->stepCap, NULL));
   PetscCall(PetscOptionsBool("-contact_safeguard", "Update the shift only of points active in both the previous and the new iterate (method.md 4.1); false only to demonstrate chatter", "SPContactSetFromOptions", c->safeguard, &c->safeguard, NULL));
   PetscCall(PetscOptionsBool("-contact_shift_settled", "In-Newton shift update only at iterations whose active set did not change (the contraction rate holds only then)", "SPContactSetFromOptions", c->settled, &c->settled, NULL));
+  PetscCall(PetscOptionsEList("-contact_tangent", "Second variation of the gap in the tangent (obstacle curvature; pair projection and normal variation): auto (once a Newton iteration left the active set unchanged), full (always: the consistent tangent), frozen (never)", "SPContactSetFromOptions", Tangents, 3, Tangents[tangent], &tangent, NULL));
   PetscCall(PetscOptionsBool("-contact_monitor", "Print one line per Newton iteration: residual, active points, max penetration, max shift change", "SPContactSetFromOptions", c->monitor, &c->monitor, NULL));
   PetscOptionsEnd();
   if (!setValues) c->nvalues = 0;
-  c->method = (SPContactMethod)method;
+  c->method  = (SPContactMethod)method;
+  c->tangent = (SPTangent)tangent;
   c->entry  = SPContactMethodEntry(c->method);
   PetscCheck(!setPenalty || c->penalty > 0.0, comm, PETSC_ERR_USER_INPUT, "-contact_penalty %g: the penalty must be positive", (double)c->penalty);
   PetscCheck(c->alpha > 0.0, comm, PETSC_ERR_USER_INPUT, "-contact_alpha %g: the penalty factor must be positive", (double)c->alpha);

@@ -73,7 +73,7 @@ test_pairs_slide() {
 # in one step, so the Newton iterates are penetrated and slid; full geometric tangent.
 test_pairs_jacobian_slid() {
   local out=$CASE_DIR/run.txt rc=0
-  spc "$out" 1 -options_file input/slide2d.opts -load_steps 1 -contact_method penalty -contact_pair_tangent full \
+  spc "$out" 1 -options_file input/slide2d.opts -load_steps 1 -contact_method penalty -contact_tangent full \
     -snes_test_jacobian -snes_max_it 3 -contact_step_cap 0 -load_max_cutbacks 0 -ksp_type preonly -pc_type lu -contact_monitor -output_dir "$CASE_DIR"
   grep -E '\|\|J - Jfd\|\|_F/\|\|J\|\|_F|contact +[0-9]' "$out"
   grep '||J - Jfd||_F/||J||_F =' "$out" | sed 's/.*||J||_F = \([^,]*\),.*/\1/' > "$CASE_DIR/ratios.txt"
@@ -118,7 +118,7 @@ empty master values|input/patch_4_5.opts|-contact_pair_0_master_values
 slave = master|input/patch_4_5.opts|-contact_pair_0_master_values 3
 unknown master value|input/patch_4_5.opts|-contact_pair_0_master_values 42
 unknown pair label|input/patch_4_5.opts|-contact_pair_0_label nosuch
-unknown tangent|input/patch_4_5.opts|-contact_pair_tangent nosuch
+unknown tangent|input/patch_4_5.opts|-contact_tangent nosuch
 two-pass without pair|input/block2d.opts|-contact_two_pass
 CASES
   return $rc

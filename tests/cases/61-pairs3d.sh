@@ -48,7 +48,7 @@ test_pairs3d_patch_tet() {
 # tested (penetrated at iterate 0, penetrated and slid later).
 pairs3d_jacobian() { # pairs3d_jacobian MESH
   local out=$CASE_DIR/$1.txt rc=0
-  spc "$out" 1 -options_file input/slide3d.opts -mesh_file "build/mesh/$1.msh" -load_steps 1 -contact_method penalty -contact_pair_tangent full \
+  spc "$out" 1 -options_file input/slide3d.opts -mesh_file "build/mesh/$1.msh" -load_steps 1 -contact_method penalty -contact_tangent full \
     -snes_test_jacobian -snes_max_it 4 -contact_step_cap 0 -load_max_cutbacks 0 -ksp_type preonly -pc_type lu -contact_monitor -output_dir "$CASE_DIR"
   grep -E '\|\|J - Jfd\|\|_F/\|\|J\|\|_F|contact +[0-9]' "$out"
   grep '||J - Jfd||_F/||J||_F =' "$out" | sed 's/.*||J||_F = \([^,]*\),.*/\1/' > "$CASE_DIR/ratios_$1.txt"
