@@ -50,3 +50,22 @@ same_summary() {
   done
   return $rc
 }
+
+# bad_input_cases: reads "why|options file|extra options" lines on stdin; every run must exit
+# nonzero (not by a signal) with exactly one stderr line "spcontact: error: ...". Returns 0 if all do.
+bad_input_cases() {
+  local rc=0 i=0 why base args code lines
+  while IFS='|' read -r why base args; do
+    [ -z "$why" ] && continue
+    i=$((i + 1))
+    # shellcheck disable=SC2086
+    timeout 60 $SPC -options_file "$base" -output_dir "$CASE_DIR" $args >"$CASE_DIR/o$i.txt" 2>"$CASE_DIR/e$i.txt"; code=$?
+    lines=$(wc -l < "$CASE_DIR/e$i.txt")
+    if [ $code -ne 0 ] && [ $code -lt 128 ] && [ "$lines" -eq 1 ] && grep -q '^spcontact: error:' "$CASE_DIR/e$i.txt"; then
+      echo "ok   $why: $(cat "$CASE_DIR/e$i.txt")"
+    else
+      echo "FAIL $why (exit $code, $lines stderr lines): $(head -3 "$CASE_DIR/e$i.txt")"; rc=1
+    fi
+  done
+  return $rc
+}
