@@ -310,6 +310,10 @@ PetscErrorCode SPSolverCreate(DM dm, SPProblem problem, SPContact contact, SPLog
      unsmoothed aggregation costs more CG iterations and never broke down in our runs. */
   PetscCall(PCGAMGSetNSmooths(pc, 0));
   PetscCall(SetDefaultOption("-mg_levels_ksp_chebyshev_esteig", "0,0.05,0,1.5"));
+  /* Between Newton iterations only the contact blocks change: keep GAMG's aggregation and
+     prolongator, recompute the Galerkin coarse operators (same iterations on B4, PC setup ~2.5x
+     cheaper; -pc_gamg_reuse_interpolation false rebuilds everything) */
+  PetscCall(SetDefaultOption("-pc_gamg_reuse_interpolation", "true"));
   *solver = s;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
