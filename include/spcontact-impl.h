@@ -117,6 +117,7 @@ struct _n_SPContact {
   SPPair          pair[2 * SP_MAX_PAIRS];
   PetscBool       twoPass;
   SPTangent       tangent;
+  PetscLogEvent   searchEvent; /* SPContactSearch: gaps, projections and the master exchange */
   PetscBool       setSettled; /* the last Newton iteration of this solve left the active set unchanged */
   PetscInt        nmfAll, mfStart, nmfOwned; /* master facets: global count, this rank's first gid and count */
   SPMasterFacet  *own;             /* this rank's owned master facets */

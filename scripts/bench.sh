@@ -14,10 +14,10 @@
 #   setup        stages "SP mesh" + "SP setup" (mesh, distribution, FE/problem, contact points,
 #                preallocation SPMatCreate, near-null space SPNearNullSpace, SPFastSetUp)
 #   bulk_res     event SPBulkResidual      bulk_jac  event SPBulkJacobian
-#   c_search     events SPContactSearch + SPShiftUpdate (rigid obstacles: the gap evaluation at
-#                the new iterate, step control and shift update; the search itself is fused into
-#                the per-point law)
-#   c_assem      event SPContactAssem (contact residual and tangent terms)
+#   c_search     event SPContactSearch (every gap evaluation: obstacle distances, pair projections
+#                and the master-facet exchange between ranks)
+#   c_assem      events SPContactAssem + SPShiftUpdate minus the search nested in them (contact
+#                residual and tangent terms, step control, shift update)
 #   pc_setup     event PCSetUp             lin_solve event KSPSolve
 #   output       stage "SP output" (HDF5/XDMF per load step, CSV, contact points)
 #   total        wall_time of the run's summary; other = total - the phases above

@@ -39,6 +39,7 @@ PetscErrorCode SPAppSetUp(SPApp a)
   PetscCall(SPProblemCreate(a->dm, &a->problem));
   PetscCall(SPProblemSetFromOptions(a->problem));
   PetscCall(SPContactCreate(a->dm, a->problem, &a->contact));
+  a->contact->searchEvent = a->log.contactSearch;
   PetscCall(SPContactSetFromOptions(a->contact));
   PetscCall(SPOutputCreate(a->dm, &a->output));
   PetscCall(SPOutputSetFromOptions(a->output));

@@ -39,6 +39,7 @@ PetscErrorCode SPContactEvaluate(SPContact c, Vec locX)
   PetscReal          load, Hg[9];
 
   PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(c->searchEvent, 0, 0, 0, 0));
   PetscCall(SPProblemGetLoadFactor(c->problem, &load));
   PetscCall(VecGetArrayRead(locX, &u));
   for (PetscInt i = 0; i < c->n; ++i) {
@@ -64,6 +65,7 @@ PetscErrorCode SPContactEvaluate(SPContact c, Vec locX)
     }
   }
   PetscCall(VecRestoreArrayRead(locX, &u));
+  PetscCall(PetscLogEventEnd(c->searchEvent, 0, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
