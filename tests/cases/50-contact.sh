@@ -93,6 +93,10 @@ test_contact_b4_indent() {
     assert_le "${m}_gap_error" "$(sval "$CASE_DIR/$m.txt" contact_gap_error)" 1e-10 || rc=1
   done
   same_summary "$CASE_DIR/shifted.txt" "$CASE_DIR/alm.txt" 1e-6 contact_force_z contact_peak_pressure || rc=1
+  # the seed's claim where a Newton solve needs more than one iteration: fewer than the nested alm
+  local ns na; ns=$(sval "$CASE_DIR/shifted.txt" newton_iterations); na=$(sval "$CASE_DIR/alm.txt" newton_iterations)
+  echo "Newton iterations: penalty $(sval "$CASE_DIR/penalty.txt" newton_iterations) shifted $ns alm $na"
+  assert_le shifted_fewer_than_alm "$ns" $((na - 1)) || rc=1
   return $rc
 }
 
