@@ -180,9 +180,28 @@ sys.exit(0 if ok else 1)
 EOF
 }
 
+# fnd_analytic_variants DIM UMAX EPS... -- NAME:NP:EXTRA...: input/elastic{DIM}d.opts with each
+# variant's extra options on NP ranks; converged, displacement_max and every vertex value exact
+fnd_analytic_variants() {
+  local dim=$1 umax=$2 rc=0 eps=() out v; shift 2
+  while [ "$1" != "--" ]; do eps+=("$1"); shift; done
+  shift
+  for v in "$@"; do
+    local name=${v%%:*} rest=${v#*:}; local np=${rest%%:*} extra=${rest#*:}
+    out="$CASE_DIR/an${dim}d_$name.out"
+    # shellcheck disable=SC2086
+    spc "$out" "$np" -options_file input/elastic${dim}d.opts $extra -output_dir "$CASE_DIR" -output_name "an${dim}d_$name" ||
+      { echo "analytic ${dim}d $name: spcontact exited with $?"; tail -n 5 "$out"; rc=1; continue; }
+    assert_eq "analytic ${dim}d $name converged" "$(sval "$out" converged)" yes || rc=1
+    assert_close "analytic ${dim}d $name displacement_max" "$(sval "$out" displacement_max)" "$umax" 1e-8 || rc=1
+    fnd_h5_linear "$CASE_DIR/an${dim}d_$name.h5" "$dim" 1 "${eps[@]}" || rc=1
+  done
+  return $rc
+}
+
 test_foundation_analytic_2d() {
   fnd_setup
-  local rc=0 nu=0.3 E=1000 s=1 p=2 exx eyy umax out
+  local rc=0 nu=0.3 E=1000 s=1 p=2 exx eyy umax
   exx=$(awk -v nu=$nu -v E=$E -v s=$s -v p=$p 'BEGIN{printf "%.17g", ((1-nu*nu)*s + nu*(1+nu)*p)/E}')
   eyy=$(awk -v nu=$nu -v E=$E -v s=$s -v p=$p 'BEGIN{printf "%.17g", (-(1-nu*nu)*p - nu*(1+nu)*s)/E}')
   umax=$(awk -v a=$exx -v b=$eyy 'BEGIN{a = (a < 0) ? -a : a; b = (b < 0) ? -b : b; m = (a > b) ? a : b; printf "%.17g", m}')
@@ -190,22 +209,13 @@ test_foundation_analytic_2d() {
   # Q1 box (the .opts file as is), Q2 box, P1 and P2 on an unstructured gmsh triangulation
   fnd_gmsh_square 6 "$CASE_DIR/sq6u.msh" 0 || return 1
   local variants=("q1:1:" "q2:2:-petscspace_degree 2" "p1u:2:-mesh_file $CASE_DIR/sq6u.msh" "p2u:3:-mesh_file $CASE_DIR/sq6u.msh -petscspace_degree 2")
-  for v in "${variants[@]}"; do
-    local name=${v%%:*} rest=${v#*:}; local np=${rest%%:*} extra=${rest#*:}
-    out="$CASE_DIR/an2d_$name.out"
-    # shellcheck disable=SC2086
-    spc "$out" "$np" -options_file input/elastic2d.opts $extra -output_dir "$CASE_DIR" -output_name "an2d_$name" ||
-      { echo "analytic 2d $name: spcontact exited with $?"; tail -n 5 "$out"; rc=1; continue; }
-    assert_eq "analytic 2d $name converged" "$(sval "$out" converged)" yes || rc=1
-    assert_close "analytic 2d $name displacement_max" "$(sval "$out" displacement_max)" "$umax" 1e-8 || rc=1
-    fnd_h5_linear "$CASE_DIR/an2d_$name.h5" 2 1 "$exx" "$eyy" || rc=1
-  done
+  fnd_analytic_variants 2 "$umax" "$exx" "$eyy" -- "${variants[@]}" || rc=1
   return $rc
 }
 
 test_foundation_analytic_3d() {
   fnd_setup
-  local rc=0 nu=0.3 E=1000 s=1 p=2 exx eyy ezz umax out
+  local rc=0 nu=0.3 E=1000 s=1 p=2 exx eyy ezz umax
   exx=$(awk -v nu=$nu -v E=$E -v s=$s -v p=$p 'BEGIN{printf "%.17g", (s + nu*p)/E}')
   eyy=$(awk -v nu=$nu -v E=$E -v s=$s -v p=$p 'BEGIN{printf "%.17g", -nu*(s - p)/E}')
   ezz=$(awk -v nu=$nu -v E=$E -v s=$s -v p=$p 'BEGIN{printf "%.17g", (-p - nu*s)/E}')
@@ -213,16 +223,7 @@ test_foundation_analytic_3d() {
   echo "closed form: eps_xx $exx eps_yy $eyy eps_zz $ezz displacement_max $umax"
   fnd_gmsh_cube 3 "$CASE_DIR/cube3u.msh" 0 || return 1
   local variants=("q1:2:" "p1u:3:-mesh_file $CASE_DIR/cube3u.msh")
-  for v in "${variants[@]}"; do
-    local name=${v%%:*} rest=${v#*:}; local np=${rest%%:*} extra=${rest#*:}
-    out="$CASE_DIR/an3d_$name.out"
-    # shellcheck disable=SC2086
-    spc "$out" "$np" -options_file input/elastic3d.opts $extra -output_dir "$CASE_DIR" -output_name "an3d_$name" ||
-      { echo "analytic 3d $name: spcontact exited with $?"; tail -n 5 "$out"; rc=1; continue; }
-    assert_eq "analytic 3d $name converged" "$(sval "$out" converged)" yes || rc=1
-    assert_close "analytic 3d $name displacement_max" "$(sval "$out" displacement_max)" "$umax" 1e-8 || rc=1
-    fnd_h5_linear "$CASE_DIR/an3d_$name.h5" 3 1 "$exx" "$eyy" "$ezz" || rc=1
-  done
+  fnd_analytic_variants 3 "$umax" "$exx" "$eyy" "$ezz" -- "${variants[@]}" || rc=1
   return $rc
 }
 
