@@ -88,7 +88,7 @@ PETSC_EXTERN PetscErrorCode SPContactView(SPContact, PetscViewer);
 PETSC_EXTERN PetscErrorCode SPContactDestroy(SPContact *);
 
 /* matrix.c */
-PETSC_EXTERN PetscErrorCode SPMatrixCreate(DM, PetscBool, PetscInt, const PetscInt[], Mat *);
+PETSC_EXTERN PetscErrorCode SPMatrixCreate(DM, PetscBool, Mat *);
 PETSC_EXTERN PetscErrorCode SPMatrixSetRigidBodyModes(DM, PetscBool, Mat);
 PETSC_EXTERN PetscErrorCode SPVertexGlobalIndices(PetscSection, PetscSection, PetscInt, PetscInt, PetscInt[]);
 

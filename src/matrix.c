@@ -4,7 +4,7 @@
    and the owner counts the unconstrained dofs of the union, split into diagonal/off-diagonal
    blocks. The pattern is then fixed by inserting zero cell blocks, as DMCreateMatrix does, so the
    result is the same matrix (same nonzeros, block size, local-to-global map, DM) at a fraction of
-   the cost. Extra couplings (e.g. slave-master contact pairs) join the adjacency. Every other
+   the cost. Contact-pair couplings are added later by contact-pattern.c. Every other
    layout (P2/Q2, several fields) goes through DMCreateMatrix. */
 #include <spcontact-impl.h>
 
@@ -33,7 +33,6 @@ typedef struct {
   PetscInt    vStart, vEnd, cStart, cEnd, dim;
   PetscInt   *cellOff, *cellVert; /* CSR: local vertices of each cell */
   PetscInt   *vOff, *vCell;       /* CSR: cells of each vertex */
-  PetscInt   *cplOff, *cplVert;   /* CSR: extra couplings of each vertex (local vertices) */
   PetscInt64 *code;               /* code of each local vertex */
   PetscInt    maxNbr;             /* bound on the neighbour list length (with repeats) */
 } Graph;
@@ -67,7 +66,7 @@ static PetscErrorCode CellVertices(DM dm, PetscInt c, PetscInt vStart, PetscInt 
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode GraphCreate(DM dm, PetscInt ncpl, const PetscInt cpl[], Graph *g)
+static PetscErrorCode GraphCreate(DM dm, Graph *g)
 {
   PetscSection    ls;
   IS              vnum;
@@ -104,34 +103,23 @@ static PetscErrorCode GraphCreate(DM dm, PetscInt ncpl, const PetscInt cpl[], Gr
     PetscCall(CellVertices(dm, g->cStart + c, g->vStart, g->vEnd, &n, verts, 64));
     for (PetscInt k = 0; k < n; ++k) g->cellVert[g->cellOff[c] + k] = verts[k] - g->vStart;
   }
-  /* vertices -> cells, and the extra couplings, both ways */
-  PetscCall(PetscCalloc2(nv + 1, &g->vOff, nv + 1, &g->cplOff));
+  /* vertices -> cells */
+  PetscCall(PetscCalloc1(nv + 1, &g->vOff));
   PetscCall(PetscCalloc2(nv, &cnt, nv, &bound));
   for (PetscInt c = 0; c < nc; ++c)
     for (PetscInt k = g->cellOff[c]; k < g->cellOff[c + 1]; ++k) {
       g->vOff[g->cellVert[k] + 1]++;
       bound[g->cellVert[k]] += g->cellOff[c + 1] - g->cellOff[c];
     }
-  for (PetscInt k = 0; k < 2 * ncpl; ++k) {
-    PetscCheck(cpl[k] >= g->vStart && cpl[k] < g->vEnd, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "coupling point %" PetscInt_FMT " is not a local vertex", cpl[k]);
-    g->cplOff[cpl[k] - g->vStart + 1]++;
-    bound[cpl[k] - g->vStart]++;
-  }
   g->maxNbr = 0;
   for (PetscInt v = 0; v < nv; ++v) g->maxNbr = PetscMax(g->maxNbr, bound[v]);
-  for (PetscInt v = 0; v < nv; ++v) g->vOff[v + 1] += g->vOff[v], g->cplOff[v + 1] += g->cplOff[v];
-  PetscCall(PetscMalloc2(g->vOff[nv], &g->vCell, g->cplOff[nv], &g->cplVert));
+  for (PetscInt v = 0; v < nv; ++v) g->vOff[v + 1] += g->vOff[v];
+  PetscCall(PetscMalloc1(g->vOff[nv], &g->vCell));
   for (PetscInt c = 0; c < nc; ++c)
     for (PetscInt k = g->cellOff[c]; k < g->cellOff[c + 1]; ++k) {
       const PetscInt v = g->cellVert[k];
       g->vCell[g->vOff[v] + cnt[v]++] = c;
     }
-  PetscCall(PetscArrayzero(cnt, nv));
-  for (PetscInt k = 0; k < ncpl; ++k) {
-    const PetscInt a = cpl[2 * k] - g->vStart, b = cpl[2 * k + 1] - g->vStart;
-    g->cplVert[g->cplOff[a] + cnt[a]++] = b;
-    g->cplVert[g->cplOff[b] + cnt[b]++] = a;
-  }
   PetscCall(PetscFree2(cnt, bound));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -142,8 +130,8 @@ static PetscErrorCode GraphDestroy(Graph *g)
   PetscCall(PetscFree(g->code));
   PetscCall(PetscFree(g->cellOff));
   PetscCall(PetscFree(g->cellVert));
-  PetscCall(PetscFree2(g->vOff, g->cplOff));
-  PetscCall(PetscFree2(g->vCell, g->cplVert));
+  PetscCall(PetscFree(g->vOff));
+  PetscCall(PetscFree(g->vCell));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -159,10 +147,6 @@ static PetscErrorCode Neighbours(const Graph *g, PetscInt v, PetscInt cap, Petsc
       PetscCheck(m < cap, PETSC_COMM_SELF, PETSC_ERR_PLIB, "neighbour buffer too small");
       buf[m++] = g->code[g->cellVert[j]];
     }
-  }
-  for (PetscInt k = g->cplOff[v]; k < g->cplOff[v + 1]; ++k) {
-    PetscCheck(m < cap, PETSC_COMM_SELF, PETSC_ERR_PLIB, "neighbour buffer too small");
-    buf[m++] = g->code[g->cplVert[k]];
   }
   PetscCall(PetscSortInt64(m, buf));
   *n = 0;
@@ -294,7 +278,7 @@ static PetscErrorCode CountNonzeros(DM dm, const Graph *g, PetscInt rStart, Pets
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Fix the pattern: a zero block per cell and per coupling, with global indices (constrained < 0) */
+/* Fix the pattern: a zero block per cell, with global indices (constrained < 0) */
 static PetscErrorCode FillPattern(DM dm, const Graph *g, Mat J)
 {
   PetscSection ls, gs;
@@ -310,12 +294,6 @@ static PetscErrorCode FillPattern(DM dm, const Graph *g, Mat J)
     for (PetscInt k = 0; k < n; ++k) PetscCall(SPVertexGlobalIndices(ls, gs, g->vStart + g->cellVert[g->cellOff[c] + k], dim, &idx[k * dim]));
     PetscCall(MatSetValues(J, n * dim, idx, n * dim, idx, zero, INSERT_VALUES));
   }
-  for (PetscInt v = 0; v < g->vEnd - g->vStart; ++v)
-    for (PetscInt k = g->cplOff[v]; k < g->cplOff[v + 1]; ++k) {
-      PetscCall(SPVertexGlobalIndices(ls, gs, g->vStart + v, dim, idx));
-      PetscCall(SPVertexGlobalIndices(ls, gs, g->vStart + g->cplVert[k], dim, &idx[dim]));
-      PetscCall(MatSetValues(J, dim, idx, dim, &idx[dim], zero, INSERT_VALUES));
-    }
   PetscCall(PetscFree(zero));
   PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY));
@@ -364,7 +342,7 @@ static PetscErrorCode BlockSize(DM dm, const Graph *g, PetscInt *bs)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode CreateVertexMatrix(DM dm, PetscInt ncpl, const PetscInt cpl[], Mat *J)
+static PetscErrorCode CreateVertexMatrix(DM dm, Mat *J)
 {
   MPI_Comm               comm = PetscObjectComm((PetscObject)dm);
   Graph                  g;
@@ -374,7 +352,7 @@ static PetscErrorCode CreateVertexMatrix(DM dm, PetscInt ncpl, const PetscInt cp
   ISLocalToGlobalMapping ltog;
 
   PetscFunctionBeginUser;
-  PetscCall(GraphCreate(dm, ncpl, cpl, &g));
+  PetscCall(GraphCreate(dm, &g));
   PetscCall(DMGetGlobalSection(dm, &gs));
   PetscCall(PetscSectionGetConstrainedStorageSize(gs, &nrows));
   PetscCallMPI(MPI_Scan(&nrows, &rStart, 1, MPIU_INT, MPI_SUM, comm));
@@ -402,20 +380,15 @@ static PetscErrorCode CreateVertexMatrix(DM dm, PetscInt ncpl, const PetscInt cp
 }
 
 /* The system matrix of dm, assembled with zeros on its full pattern. fast: vertex-adjacency
-   preallocation when the layout is first order (otherwise, or with fast false, DMCreateMatrix).
-   cpl: ncpl pairs of local vertices (ghosts allowed) whose dofs couple both ways besides the
-   cells (slave-master contact pairs); only the vertex path supports them. */
-PetscErrorCode SPMatrixCreate(DM dm, PetscBool fast, PetscInt ncpl, const PetscInt cpl[], Mat *J)
+   preallocation when the layout is first order (otherwise, or with fast false, DMCreateMatrix). */
+PetscErrorCode SPMatrixCreate(DM dm, PetscBool fast, Mat *J)
 {
   PetscBool ok = PETSC_FALSE;
 
   PetscFunctionBeginUser;
   if (fast) PetscCall(VertexLayout(dm, &ok));
-  if (ok) PetscCall(CreateVertexMatrix(dm, ncpl, cpl, J));
-  else {
-    PetscCheck(!ncpl, PETSC_COMM_SELF, PETSC_ERR_SUP, "Extra couplings need the first-order vertex preallocation");
-    PetscCall(DMCreateMatrix(dm, J));
-  }
+  if (ok) PetscCall(CreateVertexMatrix(dm, J));
+  else PetscCall(DMCreateMatrix(dm, J));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

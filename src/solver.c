@@ -318,12 +318,12 @@ PetscErrorCode SPSolverCreate(DM dm, SPProblem problem, SPContact contact, SPLog
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* The system matrix (one function: see SPMatrixCreate for extra couplings) and its near-null space */
+/* The system matrix (contact-pair couplings join its pattern in SPContactSetUpJacobian) and its near-null space */
 static PetscErrorCode SetUpMatrix(SPSolver s, PetscBool prealloc)
 {
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(s->log->matCreate, 0, 0, 0, 0));
-  PetscCall(SPMatrixCreate(s->dm, prealloc, 0, NULL, &s->J));
+  PetscCall(SPMatrixCreate(s->dm, prealloc, &s->J));
   PetscCall(PetscLogEventEnd(s->log->matCreate, 0, 0, 0, 0));
   PetscCall(PetscLogEventBegin(s->log->nearNullSpace, 0, 0, 0, 0));
   PetscCall(SPMatrixSetRigidBodyModes(s->dm, prealloc, s->J));
