@@ -16,7 +16,7 @@ CFLAGS  += -std=c99 -Wall -Wextra -Wno-unused-parameter -MMD -MP
 CPPFLAGS = -Iinclude $(PETSC_CFLAGS) $(HDF5_CFLAGS)
 LDLIBS   = $(PETSC_LIBS) -lmetis -lm
 
-SRC  := $(wildcard src/*.c src/materials/*.c)
+SRC  := $(wildcard src/*.c src/materials/*.c src/methods/*.c)
 OBJ  := $(SRC:%.c=build/%.o)
 GEO  := $(wildcard input/*.geo)
 MSH  := $(GEO:input/%.geo=build/mesh/%.msh)

@@ -48,16 +48,26 @@ struct _n_SPProblem {
 PETSC_EXTERN PetscErrorCode SPBCSetFromOptions(MPI_Comm, PetscInt, PetscInt *, SPBC[]);
 PETSC_EXTERN PetscErrorCode SPBCAddToDS(DM, PetscInt, SPBC[], PetscScalar[]);
 
+/* Enforcement methods (src/methods/<name>.c, table in src/contact-methods.c). A method is a normal
+   law (traction and its tangent) plus an update rule for the point's shift and the moment it runs:
+   never (penalty), at every Newton-iteration boundary (shifted), or after every converged inner
+   solve (alm, the outer loop in loading.c). Nothing outside those files names a method. */
+typedef enum { SP_UPDATE_NONE, SP_UPDATE_NEWTON, SP_UPDATE_SOLVE } SPUpdateTiming;
 typedef struct {
-  SPContactMethod method;
-  const char     *name;
-  PetscBool       updatesInNewton; /* shift updated at every Newton-iteration boundary */
-  PetscBool       augments;        /* shift updated after a converged Newton solve (Uzawa) */
-  PetscBool       checksGap;       /* convergence requires max penetration <= gap_tol */
-  /* new shift of one point from its history (s_k, g_k), k = 0..nh-1, newest last */
-  PetscReal (*shift)(PetscInt nh, const PetscReal hs[], const PetscReal hg[]);
-} SPMethodEntry;
-PETSC_EXTERN const SPMethodEntry *SPContactMethodEntry(SPContactMethod);
+  PetscInt history;    /* (s, g) pairs kept per point for the update rule (>= 1) */
+  PetscInt maxUpdates; /* SP_UPDATE_SOLVE: updates per load step before the step fails */
+} SPMethodParams;
+typedef struct {
+  const char       *name, *help;
+  SPUpdateTiming    timing;
+  const SPNormalLaw *law;
+  /* new shift of one point from its history (s_k, g_k), k = 0..nh-1, newest last (NULL: none) */
+  PetscReal (*update)(PetscInt nh, const PetscReal hs[], const PetscReal hg[]);
+  /* the method's own options (may be NULL); every method's are registered, so -help lists them */
+  PetscErrorCode (*setFromOptions)(PetscOptionItems *, SPMethodParams *);
+} SPMethod;
+PETSC_EXTERN const SPMethod *const SPMethodTable[];
+PETSC_EXTERN const SPMethod SPMethodPenalty, SPMethodShifted, SPMethodShiftedRegression, SPMethodALM;
 
 /* A contact pair: slave and master surfaces, label values of one label (contact-pairs.c) */
 #define SP_MAX_PAIRS 8 /* user pairs per run (-contact_pair_0_.. ); -contact_two_pass mirrors them */
@@ -80,38 +90,76 @@ typedef struct {
   PetscReal x[SP_FACET_MAXV * 3];       /* deformed coordinates at the last evaluation */
 } SPMasterFacet;
 
-/* element kinds of a contact point (c->facet[i] >= 0: a master facet) */
+/* element kinds of a contact point (geo.elem >= 0: a master facet) */
 #define SP_ELEM_NONE     (-2)
 #define SP_ELEM_OBSTACLE (-1)
 #define SP_KNOWN_FACETS  16
-typedef enum { SP_TANGENT_AUTO, SP_TANGENT_FULL, SP_TANGENT_FROZEN } SPTangent; /* master facets per point remembered as being in the Jacobian pattern */
+typedef enum { SP_TANGENT_AUTO, SP_TANGENT_FULL, SP_TANGENT_FROZEN } SPTangent;
+
+/* The contact-point record (src/contact-point.c owns it). Geometry is evaluated once per iterate
+   (the displacement and load factor it was evaluated at are remembered; SPContactEvaluate returns
+   at once for the same state); state is what the method updates and a cut-back restores. */
+typedef enum { SP_POINT_OPEN, SP_POINT_STICK, SP_POINT_SLIP } SPPointStatus;
+typedef struct {
+  PetscInt  elem;          /* master facet (index into c->mf), SP_ELEM_OBSTACLE or SP_ELEM_NONE */
+  PetscInt  obstacle;      /* elem == SP_ELEM_OBSTACLE: which obstacle */
+  PetscReal x[3];          /* deformed slave position */
+  PetscReal xi[2];         /* local coordinates of the projection on the master facet */
+  PetscReal gap;           /* normal gap (< 0: penetration) */
+  PetscReal normal[3];     /* unit normal, pointing from the master (obstacle) to the slave */
+  PetscReal tangent[2][3]; /* orthonormal tangent basis (dim - 1 vectors) */
+} SPPointGeometry;
+typedef struct {
+  PetscReal     sN;            /* normal shift (a scaled multiplier: lambda_N = -eps sN) */
+  PetscReal     sT[2];         /* tangential shift slots (dim - 1); zero without friction */
+  PetscReal     slip[2];       /* committed tangential slip of the last converged load step */
+  SPPointStatus status;        /* open / stick / slip (frictionless: open or stick = closed) */
+  PetscBool     active;        /* g + sN <= 0 at the last bookkeeping */
+  PetscInt      inactiveCount; /* consecutive inactive iterates (shift reset after two) */
+} SPPointState;
+typedef struct {
+  PetscInt        vertex, sdof[3]; /* plex vertex; global dofs of its displacement (constrained < 0) */
+  PetscInt        pairMask;        /* bit k: slave of pair k */
+  PetscBool       onObstacle;      /* slave of the rigid obstacles */
+  PetscBool       primary;         /* counts in the slave force (obstacle slave or user pair slave) */
+  PetscReal       X[3], area, h, eps; /* reference position, tributary area, facet size, penalty */
+  PetscReal       gap0;            /* gap at the first evaluation (u = 0): locates the contact centre */
+  SPPointGeometry geo;
+  SPPointState    st;
+  PetscReal       press, f[3];     /* recovered pressure and nodal contact force */
+} SPContactPoint;
 
 struct _n_SPContact {
-  DM                   dm; /* displacement DM, not owned */
-  SPProblem            problem;
-  DM                   dmC; /* one dof per slave vertex: layout of the contact points */
-  PetscBool            enabled;
-  SPContactMethod      method;
-  const SPMethodEntry *entry;
-  char                 label[PETSC_MAX_PATH_LEN];
-  PetscInt             nvalues, values[SP_MAX_VALUES];
-  PetscInt             nob;
-  SPObstacle           ob[SP_MAX_OBSTACLES];
-  PetscReal            penalty, alpha, gapTol, stepCap;
-  PetscBool            safeguard, settled;
-  PetscInt             regM, almMax;
-  PetscBool            monitor;
-  PetscInt             dim;
-  /* owned contact points, in the order of the global contact vector */
-  PetscInt   n;
-  PetscInt  *vertex;
-  PetscReal *area, *eps, *h, *coord; /* coord: reference position, dim per point; h: facet size */
-  PetscReal *gapStart;             /* gaps at the start of the Newton step (step control) */
-  PetscReal *gap, *normal;        /* at the last evaluated state */
-  PetscBool *active, *activePrev; /* activePrev: active set of the solve that produced the iterate */
-  PetscInt  *inactiveCount;
-  PetscReal *histS, *histG; /* regression history, regM per point, newest last */
-  PetscInt  *nhist;
+  DM              dm; /* displacement DM, not owned */
+  SPProblem       problem;
+  DM              dmC; /* one dof per slave vertex: layout of the contact points */
+  PetscBool       enabled;
+  const SPMethod *method;
+  SPMethodParams  params;
+  char            label[PETSC_MAX_PATH_LEN];
+  PetscInt        nvalues, values[SP_MAX_VALUES];
+  PetscInt        nob;
+  SPObstacle      ob[SP_MAX_OBSTACLES];
+  PetscReal       penalty, alpha, gapTol, stepCap;
+  PetscBool       safeguard, settled;
+  PetscBool       monitor;
+  PetscInt        dim;
+  /* owned contact points, in the order of the contact-point layout */
+  PetscInt        n, rstart;
+  SPContactPoint *pt;
+  SPPointState   *saved;     /* state at the start of the load step (cut-back) */
+  PetscReal      *gapStart;  /* gaps at the start of the Newton step (step control) */
+  PetscReal      *hist;      /* update history: params.history (s, g) pairs per point, newest last */
+  PetscInt       *nhist;
+  PetscInt       *known;     /* per point: master facets already in the Jacobian pattern */
+  /* evaluation cache: the state the geometry was last evaluated at */
+  Vec             evalX;       /* copy of the displacement of the last evaluation (NULL: none yet) */
+  PetscReal       evalLoad;    /* its load factor */
+  PetscInt        evaluations; /* evaluations done (requests for an unchanged state cost nothing) */
+  PetscInt        stepLimits;  /* Newton steps scaled by the step control (their trial iterate is evaluated too) */
+  PetscInt        shiftUpdates; /* Newton-iteration boundaries and converged solves at which the shifts moved */
+  PetscBool       centreSet;
+  PetscReal       centre[3];
   /* contact pairs (contact-pairs.c); a point may be a slave of obstacles and of several pairs */
   PetscInt        npair, nuser; /* all pairs (mirrors included), user pairs */
   SPPair          pair[2 * SP_MAX_PAIRS];
@@ -129,27 +177,24 @@ struct _n_SPContact {
   PetscLogDouble  exchangeTime;
   PetscInt        exchanges, rebuilds;
   PetscInt64      received;        /* facets received, summed over exchanges and ranks */
-  PetscInt       *sdof;            /* per point: dim global dofs of the slave vertex */
-  PetscInt       *pairMask;        /* per point: bit k set = slave of pair k */
-  PetscBool      *onObstacle, *primary; /* slave of the obstacles; counts in the force */
-  PetscInt       *facet;           /* per point: master facet, SP_ELEM_OBSTACLE or SP_ELEM_NONE */
-  PetscReal      *xi, *xs;         /* projection parameters (2 per point; 2D uses the first), deformed slave position (dim) */
-  PetscReal      *press, *fpt;     /* recovered pressure, nodal contact force (dim) */
-  PetscInt       *known;           /* per point: master facets already in the Jacobian pattern */
   Vec             Fc, fvec;        /* global contact residual; nodal forces at contact points */
   Mat             Jref;            /* last Jacobian whose pattern was extended (not owned) */
-  Vec        shift, shiftSaved;  /* global vectors on dmC */
-  Vec        pressure;           /* recovered pressure (global on dmC) */
-  SPContactStats stats;
+  SPContactStats  stats;
 };
 
-/* contact.c helpers shared by the contact files */
+/* helpers shared by the contact files */
+PETSC_EXTERN const SPNormalLaw SPLawShiftedPenalty;
+PETSC_EXTERN PetscReal      SPShiftIncrement(PetscInt, const PetscReal[], const PetscReal[]);
+PETSC_EXTERN PetscErrorCode SPContactPointsSetUp(SPContact, DMLabel);
+PETSC_EXTERN PetscErrorCode SPContactPointsDestroy(SPContact);
 PETSC_EXTERN PetscErrorCode SPContactEvaluate(SPContact, Vec);
-PETSC_EXTERN PetscErrorCode SPContactComputeStats(SPContact, const PetscScalar *);
+PETSC_EXTERN PetscErrorCode SPContactSearch(SPContact, const PetscScalar[], PetscReal);
+PETSC_EXTERN PetscErrorCode SPContactPointElement(SPContact, PetscInt, PetscInt *, PetscInt[], PetscReal *, PetscReal[], PetscReal[]);
+PETSC_EXTERN void           SPContactPointTraction(SPContact, PetscInt, PetscReal *, PetscReal *);
+PETSC_EXTERN PetscBool      SPContactPointActive(SPContact, PetscInt);
+PETSC_EXTERN PetscErrorCode SPContactComputeStats(SPContact);
 PETSC_EXTERN PetscErrorCode SPContactComputeAreas(SPContact);
-PETSC_EXTERN PetscErrorCode SPContactPointDofs(SPContact, PetscInt, PetscInt[]);
-PETSC_EXTERN PetscErrorCode SPContactRecoverForces(SPContact, const PetscScalar *);
-PETSC_EXTERN PetscErrorCode SPContactPointElement(SPContact, PetscInt, PetscInt *, PetscInt[], PetscReal *, PetscReal *, PetscReal[], PetscReal[]);
+PETSC_EXTERN PetscErrorCode SPContactRecoverForces(SPContact);
 PETSC_EXTERN PetscErrorCode SPContactFacetVertices(DM, PetscInt, PetscInt *, PetscInt[], PetscReal[]);
 /* contact-pairs.c */
 PETSC_EXTERN PetscErrorCode SPContactPairsSetFromOptions(SPContact);
@@ -182,7 +227,7 @@ struct _n_SPSolver {
   Vec                 r;
   FILE               *history; /* CSV rows, rank 0 only; may be NULL */
   PetscInt            step;
-  PetscInt            newtonTotal, linearTotal, lastLinear;
+  PetscInt            newtonTotal, linearTotal, lastLinear, funcTotal; /* funcTotal: SNES function evaluations */
   PetscBool           reuse;  /* linear material: K assembled once, r(u) = r0(load) + K u */
   Mat                 K;
   Vec                 r0;

@@ -53,9 +53,6 @@ PETSC_EXTERN PetscErrorCode SPProblemDestroy(SPProblem *);
 
 /* contact.c (points, areas), contact-search.c (obstacles), contact-enforce.c (methods),
    contact-update.c (shift update) */
-typedef enum { SP_METHOD_PENALTY, SP_METHOD_SHIFTED, SP_METHOD_SHIFTED_REGRESSION, SP_METHOD_ALM } SPContactMethod;
-PETSC_EXTERN const char *const SPContactMethods[];
-
 typedef struct {
   PetscInt  activePoints, activeChanged, augmentations;
   PetscReal maxPenetration, maxShiftChange, peakPressure, contactRadius;
@@ -69,16 +66,17 @@ PETSC_EXTERN PetscErrorCode SPContactCreate(DM, SPProblem, SPContact *);
 PETSC_EXTERN PetscErrorCode SPContactSetFromOptions(SPContact);
 PETSC_EXTERN PetscErrorCode SPContactSetUp(SPContact);
 PETSC_EXTERN PetscErrorCode SPContactIsActive(SPContact, PetscBool *);
-PETSC_EXTERN PetscErrorCode SPContactGetMethod(SPContact, SPContactMethod *);
 PETSC_EXTERN PetscErrorCode SPContactAddResidual(SPContact, Vec, Vec);
 PETSC_EXTERN PetscErrorCode SPContactAddJacobian(SPContact, Vec, Mat);
 PETSC_EXTERN PetscErrorCode SPContactSetUpJacobian(SPContact, Vec, Mat, Mat);
 PETSC_EXTERN PetscErrorCode SPContactBeginSolve(SPContact, Vec);
 PETSC_EXTERN PetscErrorCode SPContactNewtonUpdate(SPContact, Vec, PetscBool *);
 PETSC_EXTERN PetscErrorCode SPContactLimitStep(SPContact, Vec, Vec, Vec, PetscBool *);
-PETSC_EXTERN PetscErrorCode SPContactAugment(SPContact, Vec, PetscBool *);
+PETSC_EXTERN PetscErrorCode SPContactSolveUpdate(SPContact, Vec, PetscInt, PetscBool *, PetscBool *);
 PETSC_EXTERN PetscErrorCode SPContactConverged(SPContact, PetscBool *);
 PETSC_EXTERN PetscErrorCode SPContactGetStats(SPContact, SPContactStats *);
+PETSC_EXTERN PetscErrorCode SPContactGetIterationStats(SPContact, SPContactStats *);
+PETSC_EXTERN PetscErrorCode SPContactMonitor(SPContact, PetscInt, PetscReal);
 PETSC_EXTERN PetscErrorCode SPContactReportStep(SPContact, Vec, PetscInt, PetscReal);
 PETSC_EXTERN PetscErrorCode SPContactSaveState(SPContact);
 PETSC_EXTERN PetscErrorCode SPContactRestoreState(SPContact);
@@ -103,7 +101,7 @@ PETSC_EXTERN PetscErrorCode SPSolverCreate(DM, SPProblem, SPContact, SPLog *, SP
 PETSC_EXTERN PetscErrorCode SPSolverSetFromOptions(SPSolver);
 PETSC_EXTERN PetscErrorCode SPSolverSolve(SPSolver, Vec, SNESConvergedReason *);
 PETSC_EXTERN PetscErrorCode SPSolverSetHistory(SPSolver, FILE *, PetscInt);
-PETSC_EXTERN PetscErrorCode SPSolverGetCounts(SPSolver, PetscInt *, PetscInt *);
+PETSC_EXTERN PetscErrorCode SPSolverGetCounts(SPSolver, PetscInt *, PetscInt *, PetscInt *);
 PETSC_EXTERN PetscErrorCode SPSolverGetBulkOperator(SPSolver, const char **);
 PETSC_EXTERN PetscErrorCode SPSolverDestroy(SPSolver *);
 

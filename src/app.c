@@ -125,14 +125,14 @@ static PetscReal PeakMemoryMiB(void)
 PetscErrorCode SPAppSummary(SPApp a)
 {
   PetscViewer    v = PETSC_VIEWER_STDOUT_(a->comm);
-  PetscInt       newton, linear;
+  PetscInt       newton, linear, functions;
   PetscReal      umax, err;
   PetscBool      hasErr, on;
   PetscLogDouble t1;
   const char    *prefix, *bulk;
 
   PetscFunctionBeginUser;
-  PetscCall(SPSolverGetCounts(a->solver, &newton, &linear));
+  PetscCall(SPSolverGetCounts(a->solver, &newton, &linear, &functions));
   PetscCall(VecNorm(a->u, NORM_INFINITY, &umax));
   PetscCall(SPProblemComputeError(a->problem, a->u, &hasErr, &err));
   PetscCall(SPOutputGetPrefix(a->output, &prefix));
@@ -140,26 +140,13 @@ PetscErrorCode SPAppSummary(SPApp a)
   PetscCall(PetscViewerASCIIPrintf(v, "=== spcontact summary ===\n"));
   PetscCall(MeshSummary(a, v));
   PetscCall(PetscViewerASCIIPrintf(v, "converged %s\nload_steps %" PetscInt_FMT "\ncutbacks %" PetscInt_FMT "\nload_factor %g\n", a->converged ? "yes" : "no", a->stepsDone, a->cutbacks, (double)a->loadReached));
-  PetscCall(PetscViewerASCIIPrintf(v, "newton_iterations %" PetscInt_FMT "\nlinear_iterations %" PetscInt_FMT "\n", newton, linear));
+  PetscCall(PetscViewerASCIIPrintf(v, "newton_iterations %" PetscInt_FMT "\nlinear_iterations %" PetscInt_FMT "\nfunction_evaluations %" PetscInt_FMT "\n", newton, linear, functions));
   PetscCall(SPSolverGetBulkOperator(a->solver, &bulk));
   PetscCall(PetscViewerASCIIPrintf(v, "bulk_operator %s\n", bulk));
   PetscCall(PetscViewerASCIIPrintf(v, "displacement_max %.10e\n", (double)umax));
   PetscCall(PetscViewerASCIIPrintf(v, "l2_error %.10e\n", hasErr ? (double)err : -1.0));
   PetscCall(SPContactIsActive(a->contact, &on));
-  if (on) {
-    SPContactStats st;
-    PetscCall(SPContactGetStats(a->contact, &st));
-    PetscCall(SPContactView(a->contact, v));
-    PetscCall(PetscViewerASCIIPrintf(v, "contact_augmentations %" PetscInt_FMT "\ncontact_active_points %" PetscInt_FMT "\n", st.augmentations, st.activePoints));
-    PetscCall(PetscViewerASCIIPrintf(v, "contact_max_penetration %.10e\n", (double)st.maxPenetration));
-    PetscCall(PetscViewerASCIIPrintf(v, "contact_gap_error %.10e\n", (double)st.gapError));
-    PetscCall(PetscViewerASCIIPrintf(v, "contact_force_x %.12e\ncontact_force_y %.12e\ncontact_force_z %.12e\n", (double)st.force[0], (double)st.force[1], (double)st.force[2]));
-    if (a->contact->npair) {
-      PetscCall(PetscViewerASCIIPrintf(v, "contact_force_master_x %.12e\ncontact_force_master_y %.12e\ncontact_force_master_z %.12e\n", (double)st.forceMaster[0], (double)st.forceMaster[1], (double)st.forceMaster[2]));
-      PetscCall(PetscViewerASCIIPrintf(v, "contact_remote_elements %" PetscInt_FMT "\n", st.remoteElements));
-    }
-    PetscCall(PetscViewerASCIIPrintf(v, "contact_peak_pressure %.12e\ncontact_radius %.10e\n", (double)st.peakPressure, (double)st.contactRadius));
-  }
+  if (on) PetscCall(SPContactView(a->contact, v));
   {
     PetscReal mem = PeakMemoryMiB(), memMax;
     PetscCallMPI(MPI_Allreduce(&mem, &memMax, 1, MPIU_REAL, MPI_MAX, a->comm));

@@ -153,18 +153,18 @@ PetscErrorCode SPContactComputeAreas(SPContact c)
 
   PetscFunctionBeginUser;
   PetscCall(SPProblemGetYoung(c->problem, &E));
-  PetscCall(VecDuplicate(c->shift, &area));
-  PetscCall(VecDuplicate(c->shift, &meas));
-  PetscCall(VecDuplicate(c->shift, &count));
+  PetscCall(DMCreateGlobalVector(c->dmC, &area));
+  PetscCall(VecDuplicate(area, &meas));
+  PetscCall(VecDuplicate(area, &count));
   PetscCall(AccumulateFacets(c, area, meas, count));
   PetscCall(VecGetArrayRead(area, &pa));
   PetscCall(VecGetArrayRead(meas, &pm));
   PetscCall(VecGetArrayRead(count, &pc));
   for (PetscInt i = 0; i < c->n; ++i) {
     const PetscReal h = PetscPowReal(PetscRealPart(pm[i] / pc[i]), 1.0 / (c->dim - 1));
-    c->area[i]        = PetscRealPart(pa[i]);
-    c->h[i]           = h;
-    c->eps[i]         = c->penalty > 0.0 ? c->penalty : c->alpha * E / h;
+    c->pt[i].area     = PetscRealPart(pa[i]);
+    c->pt[i].h        = h;
+    c->pt[i].eps      = c->penalty > 0.0 ? c->penalty : c->alpha * E / h;
   }
   PetscCall(VecRestoreArrayRead(area, &pa));
   PetscCall(VecRestoreArrayRead(meas, &pm));

@@ -294,7 +294,7 @@ static PetscErrorCode SetUpStatic(SPContact c)
       hmax = PetscMax(hmax, SPNorm(c->dim, t));
     }
   }
-  for (PetscInt i = 0; i < c->n; ++i) hmax = PetscMax(hmax, c->h[i]);
+  for (PetscInt i = 0; i < c->n; ++i) hmax = PetscMax(hmax, c->pt[i].h);
   PetscCallMPI(MPI_Allreduce(&hmax, &c->margin, 1, MPIU_REAL, MPI_MAX, comm));
   c->margin *= 2.0;
   PetscCall(PetscFree4(cnt, dsp, cb, db));
@@ -316,10 +316,10 @@ static void SlaveBox(SPContact c, PetscReal box[])
   const PetscInt dim = c->dim;
   for (PetscInt d = 0; d < dim; ++d) box[d] = PETSC_MAX_REAL, box[dim + d] = -PETSC_MAX_REAL;
   for (PetscInt i = 0; i < c->n; ++i) {
-    if (!c->pairMask[i]) continue;
+    if (!c->pt[i].pairMask) continue;
     for (PetscInt d = 0; d < dim; ++d) {
-      box[d]       = PetscMin(box[d], c->xs[i * dim + d] - c->margin);
-      box[dim + d] = PetscMax(box[dim + d], c->xs[i * dim + d] + c->margin);
+      box[d]       = PetscMin(box[d], c->pt[i].geo.x[d] - c->margin);
+      box[dim + d] = PetscMax(box[dim + d], c->pt[i].geo.x[d] + c->margin);
     }
   }
 }
@@ -336,7 +336,7 @@ static PetscBool FacetMeets(const SPMasterFacet *m, PetscInt dim, const PetscRea
 
 /* Deformed master geometry at the local displacement u: each rank sends its owned master facets to
    every rank whose slave bounding box (inflated by the margin) they meet, or to every rank with
-   -contact_pair_exchange all. Needs c->xs of the current state. Collective. */
+   -contact_pair_exchange all. Needs the points' deformed positions (geo.x) of the current state. Collective. */
 PetscErrorCode SPContactPairsExchange(SPContact c, const PetscScalar u[])
 {
   MPI_Comm       comm = PetscObjectComm((PetscObject)c->dm);
@@ -429,11 +429,11 @@ static PetscReal BoxDistance(const SPMasterFacet *m, PetscInt dim, const PetscRe
   return PetscSqrtReal(d2);
 }
 
-/* Closest-point projection of point i (deformed position c->xs) onto the master facets of its
+/* Closest-point projection of point i (deformed position geo.x) onto the master facets of its
    pairs: facet (or SP_ELEM_NONE), parameter, gap and normal (see the rule at the top) */
 PetscErrorCode SPContactPairsProject(SPContact c, PetscInt i, PetscInt *facet, PetscReal *xi, PetscReal *g, PetscReal n[])
 {
-  const PetscReal *x = &c->xs[i * c->dim];
+  const PetscReal *x = c->pt[i].geo.x;
   PetscInt         best = -1;
   PetscReal        db = 0.0, eb = 0.0, xb[2] = {0.0, 0.0};
 
@@ -442,7 +442,7 @@ PetscErrorCode SPContactPairsProject(SPContact c, PetscInt i, PetscInt *facet, P
   for (PetscInt f = 0; f < c->nmf; ++f) {
     const SPMasterFacet *m = &c->mf[f];
     PetscReal            t[2], d, e;
-    if (!(c->pairMask[i] & ((PetscInt)1 << m->pair))) continue;
+    if (!(c->pt[i].pairMask & ((PetscInt)1 << m->pair))) continue;
     if (best >= 0 && BoxDistance(m, c->dim, x) > db + 1e-9 * (1.0 + db)) continue; /* cannot win (Better's tolerance is 1e-10) */
     if (!SPPairCandidate(c->dim, m->nv, m->x, x, t, &d, &e)) continue;
     if (Better(c, d, e, f, db, eb, best)) best = f, db = d, eb = e, xb[0] = t[0], xb[1] = t[1];

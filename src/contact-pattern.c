@@ -60,11 +60,11 @@ static PetscErrorCode Rebuild(SPContact c, Mat P)
   }
   for (PetscInt i = 0; i < c->n; ++i) {
     PetscInt  nd, dofs[SP_ELEM_MAXD];
-    PetscReal A, g, Nv[SP_ELEM_MAXD];
-    if (c->facet[i] < 0) continue;
-    PetscCall(SPContactPointElement(c, i, &nd, dofs, &A, &g, Nv, NULL));
+    PetscReal A, Nv[SP_ELEM_MAXD];
+    if (c->pt[i].geo.elem < 0) continue;
+    PetscCall(SPContactPointElement(c, i, &nd, dofs, &A, Nv, NULL));
     PetscCall(MatSetValues(pre, nd, dofs, nd, dofs, zeros, INSERT_VALUES));
-    Remember(c, i, c->mf[c->facet[i]].gid);
+    Remember(c, i, c->mf[c->pt[i].geo.elem].gid);
   }
   PetscCall(MatAssemblyBegin(pre, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(pre, MAT_FINAL_ASSEMBLY));
@@ -87,20 +87,17 @@ static PetscErrorCode Repattern(Mat P, Mat K)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Before a Jacobian assembly at locX: make P's pattern (and K's, if K) hold the pair couplings */
-PetscErrorCode SPContactSetUpJacobian(SPContact c, Vec locX, Mat P, Mat K)
+/* Before a Jacobian assembly at X: make P's pattern (and K's, if K) hold the pair couplings */
+PetscErrorCode SPContactSetUpJacobian(SPContact c, Vec X, Mat P, Mat K)
 {
-  const PetscScalar *s;
-  PetscInt           missing = 0, any;
+  PetscInt missing = 0, any;
 
   PetscFunctionBeginUser;
   if (!c || !c->enabled || !c->npair) PetscFunctionReturn(PETSC_SUCCESS);
   c->Jref = P;
-  PetscCall(SPContactEvaluate(c, locX));
-  PetscCall(VecGetArrayRead(c->shift, &s));
+  PetscCall(SPContactEvaluate(c, X));
   for (PetscInt i = 0; i < c->n && !missing; ++i)
-    if (c->facet[i] >= 0 && SPContactLawActive(c->gap[i], PetscRealPart(s[i])) && !Known(c, i, c->mf[c->facet[i]].gid)) missing = 1;
-  PetscCall(VecRestoreArrayRead(c->shift, &s));
+    if (c->pt[i].geo.elem >= 0 && SPContactPointActive(c, i) && !Known(c, i, c->mf[c->pt[i].geo.elem].gid)) missing = 1;
   PetscCallMPI(MPI_Allreduce(&missing, &any, 1, MPIU_INT, MPI_MAX, PetscObjectComm((PetscObject)P)));
   if (!any) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(Rebuild(c, P));

@@ -1,5 +1,6 @@
 /* Shift (scaled multiplier) update and contact bookkeeping at Newton-iteration boundaries:
-   active sets, the safeguards of method.md section 4, convergence, augmentation, statistics. */
+   active sets, the safeguards of method.md section 4, convergence, the update after a converged
+   solve, statistics. When a method updates, and by which rule, comes from its table entry. */
 #include <spcontact-impl.h>
 
 /* Constraint error of point i: its penetration, and for an active point also an open gap (an
@@ -26,57 +27,47 @@ static PetscErrorCode Reduce(SPContact c, PetscInt nloc[2], PetscReal rloc[3])
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Active set and statistics of the state in c->gap with the current shift */
-static PetscErrorCode Bookkeep(SPContact c, const PetscScalar s[], PetscReal maxDs, PetscBool compare)
+/* Active set and statistics of the evaluated state with the current shifts; with `compare`, the
+   number of points whose active state changed since the last bookkeeping */
+static PetscErrorCode Bookkeep(SPContact c, PetscReal maxDs, PetscBool compare)
 {
   PetscInt  n[2] = {0, 0};
   PetscReal r[3] = {0.0, maxDs, 0.0};
 
   PetscFunctionBeginUser;
   for (PetscInt i = 0; i < c->n; ++i) {
-    c->active[i] = SPContactLawActive(c->gap[i], PetscRealPart(s[i]));
-    n[0] += c->active[i];
-    if (compare) n[1] += c->active[i] != c->activePrev[i];
-    c->activePrev[i] = c->active[i];
-    r[0]             = PetscMax(r[0], -c->gap[i]);
-    r[2]             = PetscMax(r[2], GapError(c->gap[i], c->active[i]));
+    SPPointState   *st     = &c->pt[i].st;
+    const PetscReal g      = c->pt[i].geo.gap;
+    const PetscBool active = SPContactPointActive(c, i);
+    n[0] += active;
+    if (compare) n[1] += active != st->active;
+    st->active = active;
+    st->status = active ? SP_POINT_STICK : SP_POINT_OPEN;
+    r[0]       = PetscMax(r[0], -g);
+    r[2]       = PetscMax(r[2], GapError(g, active));
   }
   PetscCall(Reduce(c, n, r));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-static PetscErrorCode EvaluateGlobal(SPContact c, Vec X)
-{
-  Vec locX;
-
-  PetscFunctionBeginUser;
-  PetscCall(SPProblemGetLocalState(c->problem, X, &locX));
-  PetscCall(SPContactEvaluate(c, locX));
-  PetscCall(SPProblemRestoreLocalState(c->problem, &locX));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 /* Before a Newton solve: active set of the initial iterate (it drives the first Jacobian) */
 PetscErrorCode SPContactBeginSolve(SPContact c, Vec X)
 {
-  const PetscScalar *s;
-
   PetscFunctionBeginUser;
-  PetscCall(EvaluateGlobal(c, X));
-  PetscCall(VecGetArrayRead(c->shift, &s));
-  PetscCall(Bookkeep(c, s, 0.0, PETSC_FALSE));
-  PetscCall(VecRestoreArrayRead(c->shift, &s));
+  PetscCall(SPContactEvaluate(c, X));
+  PetscCall(Bookkeep(c, 0.0, PETSC_FALSE));
   c->setSettled = PETSC_FALSE;
   for (PetscInt i = 0; i < c->n; ++i) c->nhist[i] = 0;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Record (s, g) of point i, newest last, at most regM pairs */
+/* Record (s, g) of point i, newest last, at most params.history pairs */
 static void PushHistory(SPContact c, PetscInt i, PetscReal s, PetscReal g)
 {
-  PetscReal *hs = &c->histS[i * c->regM], *hg = &c->histG[i * c->regM];
-  if (c->nhist[i] == c->regM) {
-    for (PetscInt k = 1; k < c->regM; ++k) hs[k - 1] = hs[k], hg[k - 1] = hg[k];
+  const PetscInt m  = c->params.history;
+  PetscReal     *hs = &c->hist[2 * m * i], *hg = hs + m;
+  if (c->nhist[i] == m) {
+    for (PetscInt k = 1; k < m; ++k) hs[k - 1] = hs[k], hg[k - 1] = hg[k];
     c->nhist[i]--;
   }
   hs[c->nhist[i]] = s;
@@ -85,39 +76,44 @@ static void PushHistory(SPContact c, PetscInt i, PetscReal s, PetscReal g)
 }
 
 /* The in-Newton shift update for point i (method.md section 4, safeguards 1 and 2) */
-static PetscReal UpdatePoint(SPContact c, PetscInt i, PetscReal s)
+static PetscReal UpdatePoint(SPContact c, PetscInt i)
 {
-  const PetscBool activeNow = SPContactLawActive(c->gap[i], s);
-  if ((c->activePrev[i] || !c->safeguard) && activeNow) { /* active in the solve that produced the iterate, and now */
-    c->inactiveCount[i] = 0;
-    PushHistory(c, i, s, c->gap[i]);
-    return PetscMin(0.0, c->entry->shift(c->nhist[i], &c->histS[i * c->regM], &c->histG[i * c->regM]));
+  SPPointState   *st        = &c->pt[i].st;
+  const PetscBool activeNow = SPContactPointActive(c, i);
+  const PetscInt  m         = c->params.history;
+  if ((st->active || !c->safeguard) && activeNow) { /* active in the solve that produced the iterate, and now */
+    st->inactiveCount = 0;
+    PushHistory(c, i, st->sN, c->pt[i].geo.gap);
+    return PetscMin(0.0, c->method->update(c->nhist[i], &c->hist[2 * m * i], &c->hist[2 * m * i + m]));
   }
   c->nhist[i] = 0;
-  if (!activeNow) c->inactiveCount[i]++;
-  else c->inactiveCount[i] = 0;
-  return c->inactiveCount[i] >= 2 ? 0.0 : s; /* reset after two inactive iterates in a row */
+  if (!activeNow) st->inactiveCount++;
+  else st->inactiveCount = 0;
+  return st->inactiveCount >= 2 ? 0.0 : st->sN; /* reset after two inactive iterates in a row */
 }
 
-/* Whether the in-Newton shift update applies at this boundary: not once the gap tolerance holds
-   (an update then only perturbs a converged state), and, with -contact_shift_settled, only when
-   no point changed its active state in the last iteration (the contraction k/(k+eps) of
-   method.md section 2 needs a settled active set; an update during a change overshoots). */
-static PetscErrorCode ShiftUpdateApplies(SPContact c, const PetscScalar s[], PetscBool *applies)
+/* Whether the in-Newton shift update applies at this boundary: only for methods that update at
+   Newton-iteration boundaries, not once the gap tolerance holds (an update then only perturbs a
+   converged state), and, with -contact_shift_settled, only when no point changed its active
+   state in the last iteration (the contraction k/(k+eps) of method.md section 2 needs a settled
+   active set; an update during a change overshoots). */
+static PetscErrorCode ShiftUpdateApplies(SPContact c, PetscBool *applies)
 {
   PetscInt  n = 0, nall;
   PetscReal err = 0.0, errAll;
   MPI_Comm  comm = PetscObjectComm((PetscObject)c->dm);
 
   PetscFunctionBeginUser;
+  *applies = PETSC_FALSE;
+  if (c->method->timing != SP_UPDATE_NEWTON) PetscFunctionReturn(PETSC_SUCCESS);
   for (PetscInt i = 0; i < c->n; ++i) {
-    const PetscBool active = SPContactLawActive(c->gap[i], PetscRealPart(s[i]));
-    n += active != c->activePrev[i];
-    err = PetscMax(err, GapError(c->gap[i], active));
+    const PetscBool active = SPContactPointActive(c, i);
+    n += active != c->pt[i].st.active;
+    err = PetscMax(err, GapError(c->pt[i].geo.gap, active));
   }
   PetscCallMPI(MPI_Allreduce(&n, &nall, 1, MPIU_INT, MPI_SUM, comm));
   PetscCallMPI(MPI_Allreduce(&err, &errAll, 1, MPIU_REAL, MPI_MAX, comm));
-  *applies = c->entry->updatesInNewton && errAll > c->gapTol && (nall == 0 || !c->settled) ? PETSC_TRUE : PETSC_FALSE;
+  *applies = errAll > c->gapTol && (nall == 0 || !c->settled) ? PETSC_TRUE : PETSC_FALSE;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -125,25 +121,23 @@ static PetscErrorCode ShiftUpdateApplies(SPContact c, const PetscScalar s[], Pet
    active-set change. *changed says the residual must be recomputed for the new shift. */
 PetscErrorCode SPContactNewtonUpdate(SPContact c, Vec W, PetscBool *changed)
 {
-  PetscScalar *s;
-  PetscReal    maxDs = 0.0, all;
-  PetscBool    applies = PETSC_FALSE;
+  PetscReal maxDs = 0.0, all;
+  PetscBool applies;
 
   PetscFunctionBeginUser;
-  PetscCall(EvaluateGlobal(c, W));
-  PetscCall(VecGetArray(c->shift, &s));
-  PetscCall(ShiftUpdateApplies(c, s, &applies));
+  PetscCall(SPContactEvaluate(c, W));
+  PetscCall(ShiftUpdateApplies(c, &applies));
   if (applies)
     for (PetscInt i = 0; i < c->n; ++i) {
-      const PetscReal old = PetscRealPart(s[i]);
-      s[i]                = UpdatePoint(c, i, old);
-      maxDs               = PetscMax(maxDs, PetscAbsReal(PetscRealPart(s[i]) - old));
+      const PetscReal old = c->pt[i].st.sN;
+      c->pt[i].st.sN      = UpdatePoint(c, i);
+      maxDs               = PetscMax(maxDs, PetscAbsReal(c->pt[i].st.sN - old));
     }
-  PetscCall(Bookkeep(c, s, maxDs, PETSC_TRUE));
+  PetscCall(Bookkeep(c, maxDs, PETSC_TRUE));
   c->setSettled = c->stats.activeChanged == 0 ? PETSC_TRUE : PETSC_FALSE;
-  PetscCall(VecRestoreArray(c->shift, &s));
   PetscCallMPI(MPI_Allreduce(&maxDs, &all, 1, MPIU_REAL, MPI_MAX, PetscObjectComm((PetscObject)c->dm)));
   *changed = all > 0.0 ? PETSC_TRUE : PETSC_FALSE;
+  if (*changed) c->shiftUpdates++;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -158,118 +152,146 @@ PetscErrorCode SPContactLimitStep(SPContact c, Vec X, Vec Y, Vec W, PetscBool *c
   PetscFunctionBeginUser;
   *changed = PETSC_FALSE;
   if (c->stepCap <= 0.0) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCall(EvaluateGlobal(c, X));
-  for (PetscInt i = 0; i < c->n; ++i) c->gapStart[i] = c->gap[i];
-  PetscCall(EvaluateGlobal(c, W));
+  PetscCall(SPContactEvaluate(c, X));
+  for (PetscInt i = 0; i < c->n; ++i) c->gapStart[i] = c->pt[i].geo.gap;
+  PetscCall(SPContactEvaluate(c, W));
   for (PetscInt i = 0; i < c->n; ++i) {
-    const PetscReal cap = c->stepCap * c->h[i];
-    if (c->gap[i] < -cap && c->gapStart[i] > -cap) theta = PetscMin(theta, (c->gapStart[i] + cap) / (c->gapStart[i] - c->gap[i]));
+    const PetscReal cap = c->stepCap * c->pt[i].h, g = c->pt[i].geo.gap, g0 = c->gapStart[i];
+    if (g < -cap && g0 > -cap) theta = PetscMin(theta, (g0 + cap) / (g0 - g));
   }
   PetscCallMPI(MPI_Allreduce(&theta, &all, 1, MPIU_REAL, MPI_MIN, PetscObjectComm((PetscObject)c->dm)));
   if (all < 1.0) {
     PetscCall(VecWAXPY(W, -all, Y, X));
     *changed = PETSC_TRUE;
+    c->stepLimits++;
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Uzawa step after a converged Newton solve (alm): s <- min(0, s + g). *done when the gap
-   tolerance already holds (then nothing changes). */
-PetscErrorCode SPContactAugment(SPContact c, Vec X, PetscBool *done)
+/* After a converged Newton solve at X, for methods that update then (Uzawa): s <- min(0, rule(s, g))
+   at every point unless the gap tolerance already holds. *again: solve once more with the new
+   shifts. Fails (PETSC_ERR_NOT_CONVERGED is not used: *again false and *failed true) when the
+   method's update budget for the load step is spent. */
+PetscErrorCode SPContactSolveUpdate(SPContact c, Vec X, PetscInt done, PetscBool *again, PetscBool *failed)
 {
-  PetscScalar *s;
-  PetscReal    maxDs = 0.0;
+  PetscReal maxDs = 0.0;
 
   PetscFunctionBeginUser;
-  PetscCall(EvaluateGlobal(c, X));
-  PetscCall(VecGetArray(c->shift, &s));
-  PetscCall(Bookkeep(c, s, 0.0, PETSC_FALSE));
-  *done = c->stats.gapError <= c->gapTol ? PETSC_TRUE : PETSC_FALSE;
-  if (!*done) {
-    for (PetscInt i = 0; i < c->n; ++i) {
-      const PetscReal old = PetscRealPart(s[i]);
-      s[i]                = PetscMin(0.0, old + c->gap[i]);
-      maxDs               = PetscMax(maxDs, PetscAbsReal(PetscRealPart(s[i]) - old));
-    }
-    PetscCall(Bookkeep(c, s, maxDs, PETSC_FALSE));
-    c->stats.augmentations++;
+  *again = *failed = PETSC_FALSE;
+  if (!c->enabled || c->method->timing != SP_UPDATE_SOLVE) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(SPContactEvaluate(c, X));
+  PetscCall(Bookkeep(c, 0.0, PETSC_FALSE));
+  if (c->stats.gapError <= c->gapTol) PetscFunctionReturn(PETSC_SUCCESS);
+  if (done >= c->params.maxUpdates) {
+    PetscCall(PetscPrintf(PetscObjectComm((PetscObject)c->dm), "%s: gap tolerance %g not reached after %" PetscInt_FMT " updates (gap error %g); raise the method's update limit (-contact_alm_max)\n", c->method->name, (double)c->gapTol, done, (double)c->stats.gapError));
+    *failed = PETSC_TRUE;
+    PetscFunctionReturn(PETSC_SUCCESS);
   }
-  PetscCall(VecRestoreArray(c->shift, &s));
+  for (PetscInt i = 0; i < c->n; ++i) {
+    SPPointState   *st  = &c->pt[i].st;
+    const PetscReal old = st->sN, g = c->pt[i].geo.gap;
+    st->sN              = PetscMin(0.0, c->method->update(1, &old, &g));
+    maxDs               = PetscMax(maxDs, PetscAbsReal(st->sN - old));
+  }
+  PetscCall(Bookkeep(c, maxDs, PETSC_FALSE));
+  c->stats.augmentations++;
+  c->shiftUpdates++;
+  *again = PETSC_TRUE;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Contact part of the convergence test (method.md section 4, safeguard 4) */
+/* Contact part of the convergence test (method.md section 4, safeguard 4): a settled active set
+   and, for methods that update the shift, the gap tolerance */
 PetscErrorCode SPContactConverged(SPContact c, PetscBool *ok)
 {
   PetscFunctionBeginUser;
   *ok = c->stats.activeChanged == 0 ? PETSC_TRUE : PETSC_FALSE;
-  if (c->entry->checksGap && c->stats.gapError > c->gapTol) *ok = PETSC_FALSE;
+  if (c->method->timing == SP_UPDATE_NEWTON && c->stats.gapError > c->gapTol) *ok = PETSC_FALSE;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Warm start across load steps is automatic (s persists); these support the cut-back. */
-PetscErrorCode SPContactSaveState(SPContact c)
+/* The contact centre: the point of first contact, i.e. the smallest gap at the first evaluation
+   (u = 0); ties (a flat contact) go to the lexicographically smallest reference position, so the
+   choice does not depend on the partition. Collective, once. */
+static PetscErrorCode ContactCentre(SPContact c)
 {
-  PetscFunctionBeginUser;
-  if (c->enabled) PetscCall(VecCopy(c->shift, c->shiftSaved));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
+  MPI_Comm  comm = PetscObjectComm((PetscObject)c->dm);
+  PetscReal gmin = PETSC_MAX_REAL, all, tol;
+  PetscBool *cand;
 
-PetscErrorCode SPContactRestoreState(SPContact c)
-{
   PetscFunctionBeginUser;
-  if (!c->enabled) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCall(VecCopy(c->shiftSaved, c->shift));
-  for (PetscInt i = 0; i < c->n; ++i) c->nhist[i] = 0, c->inactiveCount[i] = 0;
+  if (c->centreSet) PetscFunctionReturn(PETSC_SUCCESS);
+  for (PetscInt i = 0; i < c->n; ++i) gmin = PetscMin(gmin, c->pt[i].gap0);
+  PetscCallMPI(MPI_Allreduce(&gmin, &all, 1, MPIU_REAL, MPI_MIN, comm));
+  tol = 1e-12 * (1.0 + PetscAbsReal(all));
+  PetscCall(PetscMalloc1(c->n + 1, &cand));
+  for (PetscInt i = 0; i < c->n; ++i) cand[i] = c->pt[i].gap0 <= all + tol ? PETSC_TRUE : PETSC_FALSE;
+  for (PetscInt d = 0; d < c->dim; ++d) {
+    PetscReal xmin = PETSC_MAX_REAL;
+    for (PetscInt i = 0; i < c->n; ++i)
+      if (cand[i]) xmin = PetscMin(xmin, c->pt[i].X[d]);
+    PetscCallMPI(MPI_Allreduce(&xmin, &c->centre[d], 1, MPIU_REAL, MPI_MIN, comm));
+    for (PetscInt i = 0; i < c->n; ++i)
+      if (cand[i] && c->pt[i].X[d] != c->centre[d]) cand[i] = PETSC_FALSE;
+  }
+  PetscCall(PetscFree(cand));
+  c->centreSet = PETSC_TRUE;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 /* Resultant contact force on the slave bodies (points of obstacle slaves and of the user's pairs'
    slave surfaces: with two passes it includes the force they receive as masters), peak recovered
-   pressure, and the extent of the pressure zone measured from the peak point (reference
-   coordinates). Uses the last evaluated state; collective. */
-PetscErrorCode SPContactComputeStats(SPContact c, const PetscScalar s[])
+   pressure, and the contact radius: the largest reference distance from the contact centre to a
+   point carrying pressure. Uses the last evaluated state; collective. */
+PetscErrorCode SPContactComputeStats(SPContact c)
 {
   MPI_Comm  comm = PetscObjectComm((PetscObject)c->dm);
-  PetscReal f[3] = {0, 0, 0}, peak[2] = {-1.0, 0.0}, gpeak[2], xp[3] = {0, 0, 0}, rmax = 0.0;
-  PetscMPIInt rank;
-  PetscInt  ipeak = -1;
+  PetscReal f[3] = {0, 0, 0}, peak = 0.0, rmax = 0.0;
 
   PetscFunctionBeginUser;
-  PetscCallMPI(MPI_Comm_rank(comm, &rank));
-  PetscCall(SPContactRecoverForces(c, s));
+  PetscCall(SPContactRecoverForces(c));
+  PetscCall(ContactCentre(c));
   for (PetscInt i = 0; i < c->n; ++i) {
-    const PetscReal p = c->press[i];
-    if (c->primary[i])
-      for (PetscInt d = 0; d < c->dim; ++d) f[d] += c->fpt[i * c->dim + d];
-    if (p > peak[0]) peak[0] = p, ipeak = i;
-  }
-  PetscCallMPI(MPI_Allreduce(f, c->stats.force, 3, MPIU_REAL, MPI_SUM, comm));
-  peak[1] = rank;
-  PetscCallMPI(MPI_Allreduce(peak, gpeak, 1, MPI_2DOUBLE_PRECISION, MPI_MAXLOC, comm));
-  if (ipeak >= 0 && (PetscMPIInt)gpeak[1] == rank)
-    for (PetscInt d = 0; d < c->dim; ++d) xp[d] = c->coord[ipeak * c->dim + d];
-  PetscCallMPI(MPI_Bcast(xp, 3, MPIU_REAL, (PetscMPIInt)gpeak[1], comm));
-  for (PetscInt i = 0; i < c->n; ++i) {
-    PetscReal dx[3] = {0, 0, 0};
-    if (c->press[i] <= 0.0) continue;
-    for (PetscInt d = 0; d < c->dim; ++d) dx[d] = c->coord[i * c->dim + d] - xp[d];
+    const SPContactPoint *pt = &c->pt[i];
+    PetscReal             dx[3] = {0, 0, 0};
+    if (pt->primary)
+      for (PetscInt d = 0; d < c->dim; ++d) f[d] += pt->f[d];
+    peak = PetscMax(peak, pt->press);
+    if (pt->press <= 0.0) continue;
+    for (PetscInt d = 0; d < c->dim; ++d) dx[d] = pt->X[d] - c->centre[d];
     rmax = PetscMax(rmax, SPNorm(c->dim, dx));
   }
+  PetscCallMPI(MPI_Allreduce(f, c->stats.force, 3, MPIU_REAL, MPI_SUM, comm));
+  PetscCallMPI(MPI_Allreduce(&peak, &c->stats.peakPressure, 1, MPIU_REAL, MPI_MAX, comm));
   PetscCallMPI(MPI_Allreduce(&rmax, &c->stats.contactRadius, 1, MPIU_REAL, MPI_MAX, comm));
-  c->stats.peakPressure = PetscMax(gpeak[0], 0.0);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Figures of the final state (forces recovered): for the summary */
 PetscErrorCode SPContactGetStats(SPContact c, SPContactStats *stats)
 {
-  const PetscScalar *s;
+  PetscFunctionBeginUser;
+  PetscCall(SPContactComputeStats(c));
+  *stats = c->stats;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Figures of the last Newton-iteration boundary (no recomputation): for monitors and history */
+PetscErrorCode SPContactGetIterationStats(SPContact c, SPContactStats *stats)
+{
+  PetscFunctionBeginUser;
+  *stats = c->stats;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* -contact_monitor: one line per Newton iteration */
+PetscErrorCode SPContactMonitor(SPContact c, PetscInt it, PetscReal fnorm)
+{
+  const SPContactStats *st = &c->stats;
 
   PetscFunctionBeginUser;
-  PetscCall(VecGetArrayRead(c->shift, &s));
-  PetscCall(SPContactComputeStats(c, s));
-  PetscCall(VecRestoreArrayRead(c->shift, &s));
-  *stats = c->stats;
+  if (!c->monitor) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(PetscPrintf(PetscObjectComm((PetscObject)c->dm), "  contact %3" PetscInt_FMT " |F| %.6e active %" PetscInt_FMT " changed %" PetscInt_FMT " max_penetration %.6e gap_error %.6e max_shift_change %.6e\n", it, (double)fnorm, st->activePoints, st->activeChanged, (double)st->maxPenetration, (double)st->gapError, (double)st->maxShiftChange));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -277,20 +299,14 @@ PetscErrorCode SPContactGetStats(SPContact c, SPContactStats *stats)
    surfaces, max penetration, peak pressure), so load paths (sliding) can be checked step by step */
 PetscErrorCode SPContactReportStep(SPContact c, Vec X, PetscInt step, PetscReal load)
 {
-  const PetscScalar *s;
-  Vec                locX;
-  PetscReal          pen = 0.0, all;
+  PetscReal pen = 0.0, all;
 
   PetscFunctionBeginUser;
   if (!c->enabled || !c->npair) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCall(SPProblemGetLocalState(c->problem, X, &locX));
-  PetscCall(SPContactEvaluate(c, locX));
-  PetscCall(SPProblemRestoreLocalState(c->problem, &locX));
-  PetscCall(VecGetArrayRead(c->shift, &s));
-  PetscCall(SPContactComputeStats(c, s));
-  PetscCall(VecRestoreArrayRead(c->shift, &s));
+  PetscCall(SPContactEvaluate(c, X));
+  PetscCall(SPContactComputeStats(c));
   for (PetscInt i = 0; i < c->n; ++i)
-    if (c->facet[i] != SP_ELEM_NONE) pen = PetscMax(pen, -c->gap[i]);
+    if (c->pt[i].geo.elem != SP_ELEM_NONE) pen = PetscMax(pen, -c->pt[i].geo.gap);
   PetscCallMPI(MPI_Allreduce(&pen, &all, 1, MPIU_REAL, MPI_MAX, PetscObjectComm((PetscObject)c->dm)));
   PetscCall(PetscPrintf(PetscObjectComm((PetscObject)c->dm), "contact_step %" PetscInt_FMT " load %.6f force %.12e %.12e master_force %.12e %.12e max_penetration %.6e peak_pressure %.10e\n", step, (double)load, (double)c->stats.force[0], (double)c->stats.force[1], (double)c->stats.forceMaster[0], (double)c->stats.forceMaster[1], (double)all, (double)c->stats.peakPressure));
   PetscFunctionReturn(PETSC_SUCCESS);

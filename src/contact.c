@@ -2,7 +2,6 @@
    contact-point vector layout (dmC: one dof per slave vertex), options and output fields. */
 #include <spcontact-impl.h>
 
-const char *const SPContactMethods[] = {"penalty", "shifted", "shifted_regression", "alm", "SPContactMethod", "SP_METHOD_", NULL};
 static const char *const ObstacleTypes[] = {"plane", "sphere", "cylinder", "SPObstacleType", "SP_OBSTACLE_", NULL};
 static const char *const Tangents[]      = {"auto", "full", "frozen", "SPTangent", "SP_TANGENT_", NULL};
 
@@ -14,11 +13,9 @@ PetscErrorCode SPContactCreate(DM dm, SPProblem problem, SPContact *contact)
   PetscCall(PetscNew(&c));
   c->dm      = dm;
   c->problem = problem;
-  c->method  = SP_METHOD_SHIFTED;
+  c->method  = &SPMethodShifted;
   c->alpha   = 10.0;
   c->gapTol  = 1e-10;
-  c->regM    = 4;
-  c->almMax  = 30;
   c->stepCap = 1.0;
   c->safeguard = PETSC_TRUE;
   c->settled   = PETSC_TRUE;
@@ -59,22 +56,48 @@ static PetscErrorCode ObstacleSetFromOptions(MPI_Comm comm, PetscInt i, PetscInt
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* -contact_method from the method table, then every method's own options (only the chosen
+   method's values are kept; the others are read so that -help lists them) */
+static PetscErrorCode MethodSetFromOptions(PetscOptionItems *PetscOptionsObject, SPContact c)
+{
+  const char *names[16], *def = c->method->name;
+  char        help[1024] = "Contact method:";
+  PetscInt    n = 0, pick = 0;
+
+  PetscFunctionBeginUser;
+  for (; SPMethodTable[n]; ++n) {
+    names[n] = SPMethodTable[n]->name;
+    if (SPMethodTable[n] == c->method) pick = n;
+    PetscCall(PetscStrlcat(help, n ? "; " : " ", sizeof(help)));
+    PetscCall(PetscStrlcat(help, names[n], sizeof(help)));
+    PetscCall(PetscStrlcat(help, " (", sizeof(help)));
+    PetscCall(PetscStrlcat(help, SPMethodTable[n]->help, sizeof(help)));
+    PetscCall(PetscStrlcat(help, ")", sizeof(help)));
+  }
+  PetscCall(PetscOptionsEList("-contact_method", help, "SPContactSetFromOptions", names, n, def, &pick, NULL));
+  c->method         = SPMethodTable[pick];
+  c->params.history = 1;
+  for (PetscInt k = 0; k < n; ++k) {
+    SPMethodParams other = c->params;
+    if (SPMethodTable[k]->setFromOptions) PetscCall(SPMethodTable[k]->setFromOptions(PetscOptionsObject, k == pick ? &c->params : &other));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode SPContactSetFromOptions(SPContact c)
 {
   MPI_Comm  comm = PetscObjectComm((PetscObject)c->dm);
-  PetscInt  method = (PetscInt)c->method, tangent = (PetscInt)c->tangent;
+  PetscInt  tangent = (PetscInt)c->tangent;
   PetscBool setValues, setPenalty;
 
   PetscFunctionBeginUser;
   PetscOptionsBegin(comm, NULL, "Contact options", "spcontact");
-  PetscCall(PetscOptionsEList("-contact_method", "Contact method: penalty, shifted (Delta s = g before each Newton iteration), shifted_regression (least-squares shift over the last m iterates), alm (nested augmented Lagrangian)", "SPContactSetFromOptions", SPContactMethods, 4, SPContactMethods[method], &method, NULL));
+  PetscCall(MethodSetFromOptions(PetscOptionsObject, c));
   PetscCall(PetscOptionsString("-contact_label", "Mesh label of the slave boundary", "SPContactSetFromOptions", c->label, c->label, sizeof(c->label), NULL));
   PetscCall(PetscOptionsIntArray("-contact_values", "Label values of the slave boundary", "SPContactSetFromOptions", c->values, &c->nvalues, &setValues));
   PetscCall(PetscOptionsReal("-contact_penalty", "Absolute penalty eps per unit area (stress/length); default: alpha E / h", "SPContactSetFromOptions", c->penalty, &c->penalty, &setPenalty));
   PetscCall(PetscOptionsReal("-contact_alpha", "Penalty factor: eps = alpha E / h, h the mean slave facet size at the point", "SPContactSetFromOptions", c->alpha, &c->alpha, NULL));
   PetscCall(PetscOptionsReal("-contact_gap_tol", "Shifted/alm methods: converged only when no point penetrates more than gap_tol and every active point has |gap| <= gap_tol", "SPContactSetFromOptions", c->gapTol, &c->gapTol, NULL));
-  PetscCall(PetscOptionsInt("-contact_regression_m", "shifted_regression: number of (shift, gap) pairs in the fit (>= 3)", "SPContactSetFromOptions", c->regM, &c->regM, NULL));
-  PetscCall(PetscOptionsInt("-contact_alm_max", "alm: maximum number of augmentations", "SPContactSetFromOptions", c->almMax, &c->almMax, NULL));
   PetscCall(PetscOptionsReal("-contact_step_cap", "Newton step control: scale a step so no point penetrates deeper than step_cap x h in one step (0: off)", "SPContactSetFromOptions", c->stepCap, &c->stepCap, NULL));
   PetscCall(PetscOptionsBool("-contact_safeguard", "Update the shift only of points active in both the previous and the new iterate (method.md 4.1); false only to demonstrate chatter", "SPContactSetFromOptions", c->safeguard, &c->safeguard, NULL));
   PetscCall(PetscOptionsBool("-contact_shift_settled", "In-Newton shift update only at iterations whose active set did not change (the contraction rate holds only then)", "SPContactSetFromOptions", c->settled, &c->settled, NULL));
@@ -82,15 +105,11 @@ PetscErrorCode SPContactSetFromOptions(SPContact c)
   PetscCall(PetscOptionsBool("-contact_monitor", "Print one line per Newton iteration: residual, active points, max penetration, max shift change", "SPContactSetFromOptions", c->monitor, &c->monitor, NULL));
   PetscOptionsEnd();
   if (!setValues) c->nvalues = 0;
-  c->method  = (SPContactMethod)method;
   c->tangent = (SPTangent)tangent;
-  c->entry  = SPContactMethodEntry(c->method);
   PetscCheck(!setPenalty || c->penalty > 0.0, comm, PETSC_ERR_USER_INPUT, "-contact_penalty %g: the penalty must be positive", (double)c->penalty);
   PetscCheck(c->alpha > 0.0, comm, PETSC_ERR_USER_INPUT, "-contact_alpha %g: the penalty factor must be positive", (double)c->alpha);
   PetscCheck(c->gapTol > 0.0, comm, PETSC_ERR_USER_INPUT, "-contact_gap_tol %g: must be positive", (double)c->gapTol);
-  PetscCheck(c->regM >= 3, comm, PETSC_ERR_USER_INPUT, "-contact_regression_m %" PetscInt_FMT ": the fit needs at least 3 pairs", c->regM);
   PetscCheck(c->stepCap >= 0.0, comm, PETSC_ERR_USER_INPUT, "-contact_step_cap %g: must be >= 0 (0 disables the step control)", (double)c->stepCap);
-  PetscCheck(c->almMax >= 1, comm, PETSC_ERR_USER_INPUT, "-contact_alm_max %" PetscInt_FMT ": need at least 1 augmentation", c->almMax);
   for (c->nob = 0; c->nob < SP_MAX_OBSTACLES; ++c->nob) {
     char      name[48];
     PetscBool has;
@@ -113,125 +132,6 @@ PetscErrorCode SPContactIsActive(SPContact c, PetscBool *on)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode SPContactGetMethod(SPContact c, SPContactMethod *m)
-{
-  PetscFunctionBeginUser;
-  *m = c->method;
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-/* dmC: a clone of the mesh with one dof on every vertex of the (completed) slave label */
-static PetscErrorCode CreatePointDM(SPContact c, DMLabel slave)
-{
-  PetscSection s;
-  PetscInt     pStart, pEnd, vStart, vEnd;
-
-  PetscFunctionBeginUser;
-  PetscCall(DMClone(c->dm, &c->dmC));
-  PetscCall(DMPlexGetChart(c->dm, &pStart, &pEnd));
-  PetscCall(DMPlexGetDepthStratum(c->dm, 0, &vStart, &vEnd));
-  PetscCall(PetscSectionCreate(PetscObjectComm((PetscObject)c->dm), &s));
-  PetscCall(PetscSectionSetChart(s, pStart, pEnd));
-  for (PetscInt v = vStart; v < vEnd; ++v) {
-    PetscInt val;
-    PetscCall(DMLabelGetValue(slave, v, &val));
-    if (val == 1) PetscCall(PetscSectionSetDof(s, v, 1));
-  }
-  PetscCall(PetscSectionSetUp(s));
-  PetscCall(DMSetLocalSection(c->dmC, s));
-  PetscCall(PetscSectionDestroy(&s));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-static PetscErrorCode CollectPoints(SPContact c)
-{
-  PetscSection gs;
-  PetscInt     vStart, vEnd, rstart, k = 0;
-  Vec          coords;
-  PetscSection cs;
-  const PetscScalar *ca;
-
-  PetscFunctionBeginUser;
-  PetscCall(DMGetGlobalSection(c->dmC, &gs));
-  PetscCall(DMPlexGetDepthStratum(c->dm, 0, &vStart, &vEnd));
-  PetscCall(DMCreateGlobalVector(c->dmC, &c->shift));
-  PetscCall(PetscObjectSetName((PetscObject)c->shift, "shift"));
-  PetscCall(VecDuplicate(c->shift, &c->shiftSaved));
-  PetscCall(VecDuplicate(c->shift, &c->pressure));
-  PetscCall(VecGetLocalSize(c->shift, &c->n));
-  PetscCall(VecGetOwnershipRange(c->shift, &rstart, NULL));
-  PetscCall(PetscCalloc5(c->n, &c->vertex, c->n, &c->area, c->n, &c->eps, c->n * c->dim, &c->coord, c->n, &c->gap));
-  PetscCall(PetscCalloc2(c->n, &c->h, c->n, &c->gapStart));
-  PetscCall(PetscCalloc5(c->n * c->dim, &c->normal, c->n, &c->active, c->n, &c->activePrev, c->n, &c->inactiveCount, c->n, &c->nhist));
-  PetscCall(PetscCalloc2(c->n * c->regM, &c->histS, c->n * c->regM, &c->histG));
-  PetscCall(PetscCalloc5(c->n * c->dim, &c->sdof, c->n, &c->pairMask, c->n, &c->onObstacle, c->n, &c->primary, c->n, &c->facet));
-  PetscCall(PetscCalloc5(2 * c->n, &c->xi, c->n * c->dim, &c->xs, c->n, &c->press, c->n * c->dim, &c->fpt, c->n * SP_KNOWN_FACETS, &c->known));
-  for (PetscInt i = 0; i < c->n * SP_KNOWN_FACETS; ++i) c->known[i] = -1;
-  PetscCall(DMGetCoordinatesLocal(c->dm, &coords));
-  PetscCall(DMGetCoordinateSection(c->dm, &cs));
-  PetscCall(VecGetArrayRead(coords, &ca));
-  for (PetscInt v = vStart; v < vEnd; ++v) {
-    PetscInt dof, off, coff;
-    PetscCall(PetscSectionGetDof(gs, v, &dof));
-    PetscCall(PetscSectionGetOffset(gs, v, &off));
-    if (dof <= 0 || off < 0) continue; /* not a slave vertex, or owned by another rank */
-    k = off - rstart;
-    c->vertex[k] = v;
-    PetscCall(PetscSectionGetOffset(cs, v, &coff));
-    for (PetscInt d = 0; d < c->dim; ++d) c->coord[k * c->dim + d] = PetscRealPart(ca[coff + d]);
-  }
-  PetscCall(VecRestoreArrayRead(coords, &ca));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-/* Which slave sets each point belongs to: the obstacles' and each pair's (bit k of pairMask) */
-static PetscErrorCode MarkPoints(SPContact c)
-{
-  DMLabel lab;
-
-  PetscFunctionBeginUser;
-  if (c->nob) {
-    PetscCall(SPMeshCreateCompletedLabel(c->dm, c->label, c->nvalues, c->values, "spcontact_obstacle_slave", &lab));
-    for (PetscInt i = 0; i < c->n; ++i) {
-      PetscInt val;
-      PetscCall(DMLabelGetValue(lab, c->vertex[i], &val));
-      c->onObstacle[i] = c->primary[i] = val == 1 ? PETSC_TRUE : PETSC_FALSE;
-    }
-    PetscCall(DMRemoveLabel(c->dm, "spcontact_obstacle_slave", NULL));
-  }
-  for (PetscInt k = 0; k < c->npair; ++k) {
-    const SPPair *p = &c->pair[k];
-    PetscCall(SPMeshCreateCompletedLabel(c->dm, p->label, p->nslave, p->slave, "spcontact_pair_slave", &lab));
-    for (PetscInt i = 0; i < c->n; ++i) {
-      PetscInt val;
-      PetscCall(DMLabelGetValue(lab, c->vertex[i], &val));
-      if (val != 1) continue;
-      c->pairMask[i] |= (PetscInt)1 << k;
-      if (!p->mirror) c->primary[i] = PETSC_TRUE;
-    }
-    PetscCall(DMRemoveLabel(c->dm, "spcontact_pair_slave", NULL));
-  }
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-/* Global dofs of each point's vertex (constrained ones negative) */
-static PetscErrorCode PointGlobalDofs(SPContact c)
-{
-  PetscSection ls, gs;
-
-  PetscFunctionBeginUser;
-  PetscCall(DMGetLocalSection(c->dm, &ls));
-  PetscCall(DMGetGlobalSection(c->dm, &gs));
-  for (PetscInt i = 0; i < c->n; ++i) {
-    PetscInt *idx = NULL, nidx;
-    PetscCall(DMPlexGetClosureIndices(c->dm, ls, gs, c->vertex[i], PETSC_TRUE, &nidx, &idx, NULL, NULL));
-    PetscCheck(nidx == c->dim, PETSC_COMM_SELF, PETSC_ERR_PLIB, "vertex with %" PetscInt_FMT " dofs", nidx);
-    for (PetscInt d = 0; d < c->dim; ++d) c->sdof[i * c->dim + d] = idx[d];
-    PetscCall(DMPlexRestoreClosureIndices(c->dm, ls, gs, c->vertex[i], PETSC_TRUE, &nidx, &idx, NULL, NULL));
-  }
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 PetscErrorCode SPContactSetUp(SPContact c)
 {
   MPI_Comm comm = PetscObjectComm((PetscObject)c->dm);
@@ -249,17 +149,14 @@ PetscErrorCode SPContactSetUp(SPContact c)
   PetscCall(SPContactPairsCheckLabels(c));
   for (PetscInt k = 0; k < c->npair; ++k) /* the union of every slave surface */
     PetscCall(SPMeshCreateCompletedLabel(c->dm, c->pair[k].label, c->pair[k].nslave, c->pair[k].slave, "spcontact_slave", &slave));
-  PetscCall(CreatePointDM(c, slave));
-  PetscCall(CollectPoints(c));
-  PetscCall(MarkPoints(c));
-  PetscCall(PointGlobalDofs(c));
+  PetscCall(SPContactPointsSetUp(c, slave));
   PetscCall(SPContactComputeAreas(c));
   PetscCall(DMCreateGlobalVector(c->dm, &c->Fc));
   PetscCall(VecCreateMPI(comm, c->n * c->dim, PETSC_DETERMINE, &c->fvec));
   PetscCall(VecSetOption(c->fvec, VEC_IGNORE_NEGATIVE_INDICES, PETSC_TRUE));
   PetscCall(VecSetOption(c->Fc, VEC_IGNORE_NEGATIVE_INDICES, PETSC_TRUE));
   PetscCall(SPContactPairsSetUp(c));
-  PetscCall(VecGetSize(c->shift, &nAll));
+  PetscCallMPI(MPI_Allreduce(&c->n, &nAll, 1, MPIU_INT, MPI_SUM, comm));
   PetscCheck(nAll > 0, comm, PETSC_ERR_USER_INPUT, "-contact_values: the slave boundary has no vertices");
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -267,20 +164,14 @@ PetscErrorCode SPContactSetUp(SPContact c)
 /* Vertex fields for output: pressure, gap, shift, active on the vertex DM of `pressure` */
 PetscErrorCode SPContactGetFields(SPContact c, Vec X, Vec pressure, Vec gap, Vec shift, Vec active)
 {
-  DM                 dmS;
-  PetscSection       gs;
-  PetscInt           rstart;
-  const PetscScalar *s;
-  PetscScalar       *p, *g, *sh, *a;
-  Vec                locX;
+  DM           dmS;
+  PetscSection gs;
+  PetscInt     rstart;
+  PetscScalar *p, *g, *sh, *a;
 
   PetscFunctionBeginUser;
-  PetscCall(SPProblemGetLocalState(c->problem, X, &locX));
-  PetscCall(SPContactEvaluate(c, locX));
-  PetscCall(SPProblemRestoreLocalState(c->problem, &locX));
-  PetscCall(VecGetArrayRead(c->shift, &s));
-  PetscCall(SPContactRecoverForces(c, s));
-  PetscCall(VecRestoreArrayRead(c->shift, &s));
+  PetscCall(SPContactEvaluate(c, X));
+  PetscCall(SPContactRecoverForces(c));
   PetscCall(VecGetDM(pressure, &dmS));
   PetscCall(DMGetGlobalSection(dmS, &gs));
   PetscCall(VecGetOwnershipRange(pressure, &rstart, NULL));
@@ -288,21 +179,20 @@ PetscErrorCode SPContactGetFields(SPContact c, Vec X, Vec pressure, Vec gap, Vec
   PetscCall(VecZeroEntries(gap));
   PetscCall(VecZeroEntries(shift));
   PetscCall(VecZeroEntries(active));
-  PetscCall(VecGetArrayRead(c->shift, &s));
   PetscCall(VecGetArray(pressure, &p));
   PetscCall(VecGetArray(gap, &g));
   PetscCall(VecGetArray(shift, &sh));
   PetscCall(VecGetArray(active, &a));
   for (PetscInt i = 0; i < c->n; ++i) {
-    PetscInt off;
-    PetscCall(PetscSectionGetOffset(gs, c->vertex[i], &off));
+    const SPContactPoint *pt = &c->pt[i];
+    PetscInt              off;
+    PetscCall(PetscSectionGetOffset(gs, pt->vertex, &off));
     off -= rstart;
-    p[off]  = c->press[i];
-    g[off]  = c->gap[i];
-    sh[off] = s[i];
-    a[off]  = c->active[i] ? 1.0 : 0.0;
+    p[off]  = pt->press;
+    g[off]  = pt->geo.gap;
+    sh[off] = pt->st.sN;
+    a[off]  = pt->st.active ? 1.0 : 0.0;
   }
-  PetscCall(VecRestoreArrayRead(c->shift, &s));
   PetscCall(VecRestoreArray(pressure, &p));
   PetscCall(VecRestoreArray(gap, &g));
   PetscCall(VecRestoreArray(shift, &sh));
@@ -313,33 +203,28 @@ PetscErrorCode SPContactGetFields(SPContact c, Vec X, Vec pressure, Vec gap, Vec
 /* Every contact point on rank 0 as CSV: reference coordinates, area, eps, gap, shift, pressure */
 PetscErrorCode SPContactWritePoints(SPContact c, Vec X, const char file[])
 {
-  MPI_Comm           comm = PetscObjectComm((PetscObject)c->dm);
-  const PetscInt     nc   = 9;
-  PetscMPIInt        size, rank, mine = (PetscMPIInt)(c->n * nc), *counts = NULL, *displs = NULL;
-  PetscReal         *row, *all = NULL;
-  const PetscScalar *s;
-  Vec                locX;
+  MPI_Comm     comm = PetscObjectComm((PetscObject)c->dm);
+  const PetscInt nc = 9;
+  PetscMPIInt  size, rank, mine = (PetscMPIInt)(c->n * nc), *counts = NULL, *displs = NULL;
+  PetscReal   *row, *all = NULL;
 
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_size(comm, &size));
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
-  PetscCall(SPProblemGetLocalState(c->problem, X, &locX));
-  PetscCall(SPContactEvaluate(c, locX));
-  PetscCall(SPProblemRestoreLocalState(c->problem, &locX));
+  PetscCall(SPContactEvaluate(c, X));
+  PetscCall(SPContactRecoverForces(c));
   PetscCall(PetscCalloc1(c->n * nc + 1, &row));
-  PetscCall(VecGetArrayRead(c->shift, &s));
-  PetscCall(SPContactRecoverForces(c, s));
   for (PetscInt i = 0; i < c->n; ++i) {
-    PetscReal *r = &row[i * nc];
-    for (PetscInt d = 0; d < c->dim; ++d) r[d] = c->coord[i * c->dim + d];
-    r[3] = c->area[i];
-    r[4] = c->eps[i];
-    r[5] = c->gap[i];
-    r[6] = PetscRealPart(s[i]);
-    r[7] = c->press[i];
-    r[8] = c->active[i];
+    const SPContactPoint *pt = &c->pt[i];
+    PetscReal            *r  = &row[i * nc];
+    for (PetscInt d = 0; d < c->dim; ++d) r[d] = pt->X[d];
+    r[3] = pt->area;
+    r[4] = pt->eps;
+    r[5] = pt->geo.gap;
+    r[6] = pt->st.sN;
+    r[7] = pt->press;
+    r[8] = pt->st.active;
   }
-  PetscCall(VecRestoreArrayRead(c->shift, &s));
   if (rank == 0) PetscCall(PetscMalloc2(size, &counts, size + 1, &displs));
   PetscCallMPI(MPI_Gather(&mine, 1, MPI_INT, counts, 1, MPI_INT, 0, comm));
   if (rank == 0) {
@@ -364,32 +249,34 @@ PetscErrorCode SPContactWritePoints(SPContact c, Vec X, const char file[])
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode SPContactView(SPContact c, PetscViewer v)
+/* The set-up and cost figures of the summary block */
+static PetscErrorCode ViewSetUp(SPContact c, PetscViewer v)
 {
-  PetscInt  nAll;
-  PetscReal emin = PETSC_MAX_REAL, emax = 0.0, gmin, gmax;
+  MPI_Comm       comm = PetscObjectComm((PetscObject)c->dm);
+  PetscInt       nAll, evals;
+  PetscReal      emin = PETSC_MAX_REAL, emax = 0.0, gmin, gmax;
+  PetscInt64     rec;
+  PetscLogDouble tmax;
+  PetscMPIInt    size;
 
   PetscFunctionBeginUser;
-  if (!c->enabled) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCall(VecGetSize(c->shift, &nAll));
-  for (PetscInt i = 0; i < c->n; ++i) emin = PetscMin(emin, c->eps[i]), emax = PetscMax(emax, c->eps[i]);
-  PetscCallMPI(MPI_Allreduce(&emin, &gmin, 1, MPIU_REAL, MPI_MIN, PetscObjectComm((PetscObject)c->dm)));
-  PetscCallMPI(MPI_Allreduce(&emax, &gmax, 1, MPIU_REAL, MPI_MAX, PetscObjectComm((PetscObject)c->dm)));
-  PetscCall(PetscViewerASCIIPrintf(v, "contact_method %s\n", c->entry->name));
+  PetscCallMPI(MPI_Comm_size(comm, &size));
+  PetscCallMPI(MPI_Allreduce(&c->n, &nAll, 1, MPIU_INT, MPI_SUM, comm));
+  PetscCallMPI(MPI_Allreduce(&c->evaluations, &evals, 1, MPIU_INT, MPI_MAX, comm));
+  for (PetscInt i = 0; i < c->n; ++i) emin = PetscMin(emin, c->pt[i].eps), emax = PetscMax(emax, c->pt[i].eps);
+  PetscCallMPI(MPI_Allreduce(&emin, &gmin, 1, MPIU_REAL, MPI_MIN, comm));
+  PetscCallMPI(MPI_Allreduce(&emax, &gmax, 1, MPIU_REAL, MPI_MAX, comm));
+  PetscCallMPI(MPI_Allreduce(&c->received, &rec, 1, MPIU_INT64, MPI_SUM, comm));
+  PetscCallMPI(MPI_Allreduce(&c->exchangeTime, &tmax, 1, MPI_DOUBLE, MPI_MAX, comm));
+  PetscCall(PetscViewerASCIIPrintf(v, "contact_method %s\n", c->method->name));
+  PetscCall(PetscViewerASCIIPrintf(v, "contact_law %s\n", c->method->law->name));
   PetscCall(PetscViewerASCIIPrintf(v, "contact_points %" PetscInt_FMT "\n", nAll));
   PetscCall(PetscViewerASCIIPrintf(v, "contact_obstacles %" PetscInt_FMT "\n", c->nob));
   PetscCall(PetscViewerASCIIPrintf(v, "contact_pairs %" PetscInt_FMT "\ncontact_two_pass %s\n", c->nuser, c->twoPass ? "yes" : "no"));
   PetscCall(PetscViewerASCIIPrintf(v, "contact_master_facets %" PetscInt_FMT "\n", c->nmfAll));
-  {
-    PetscInt64     rec;
-    PetscLogDouble tmax;
-    PetscMPIInt    size;
-    PetscCallMPI(MPI_Comm_size(PetscObjectComm((PetscObject)c->dm), &size));
-    PetscCallMPI(MPI_Allreduce(&c->received, &rec, 1, MPIU_INT64, MPI_SUM, PetscObjectComm((PetscObject)c->dm)));
-    PetscCallMPI(MPI_Allreduce(&c->exchangeTime, &tmax, 1, MPI_DOUBLE, MPI_MAX, PetscObjectComm((PetscObject)c->dm)));
-    PetscCall(PetscViewerASCIIPrintf(v, "contact_exchanges %" PetscInt_FMT "\ncontact_exchange_time %.6f\n", c->exchanges, (double)tmax));
-    PetscCall(PetscViewerASCIIPrintf(v, "contact_exchange_facets_per_rank %.1f\n", c->exchanges ? (double)rec / (double)(c->exchanges * size) : 0.0));
-  }
+  PetscCall(PetscViewerASCIIPrintf(v, "contact_evaluations %" PetscInt_FMT "\ncontact_step_limits %" PetscInt_FMT "\ncontact_shift_updates %" PetscInt_FMT "\n", evals, c->stepLimits, c->shiftUpdates));
+  PetscCall(PetscViewerASCIIPrintf(v, "contact_exchanges %" PetscInt_FMT "\ncontact_exchange_time %.6f\n", c->exchanges, (double)tmax));
+  PetscCall(PetscViewerASCIIPrintf(v, "contact_exchange_facets_per_rank %.1f\n", c->exchanges ? (double)rec / (double)(c->exchanges * size) : 0.0));
   PetscCall(PetscViewerASCIIPrintf(v, "contact_pattern_rebuilds %" PetscInt_FMT "\n", c->rebuilds));
   if (c->npair) { /* mallocs during MatSetValues on the Jacobian (0: the preallocation held) */
     MatInfo info;
@@ -402,24 +289,34 @@ PetscErrorCode SPContactView(SPContact c, PetscViewer v)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The contact keys of the summary block (figures of the final state). Collective. */
+PetscErrorCode SPContactView(SPContact c, PetscViewer v)
+{
+  SPContactStats st;
+
+  PetscFunctionBeginUser;
+  if (!c->enabled) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(ViewSetUp(c, v));
+  PetscCall(SPContactGetStats(c, &st));
+  PetscCall(PetscViewerASCIIPrintf(v, "contact_augmentations %" PetscInt_FMT "\ncontact_active_points %" PetscInt_FMT "\n", st.augmentations, st.activePoints));
+  PetscCall(PetscViewerASCIIPrintf(v, "contact_max_penetration %.10e\n", (double)st.maxPenetration));
+  PetscCall(PetscViewerASCIIPrintf(v, "contact_gap_error %.10e\n", (double)st.gapError));
+  PetscCall(PetscViewerASCIIPrintf(v, "contact_force_x %.12e\ncontact_force_y %.12e\ncontact_force_z %.12e\n", (double)st.force[0], (double)st.force[1], (double)st.force[2]));
+  if (c->npair) {
+    PetscCall(PetscViewerASCIIPrintf(v, "contact_force_master_x %.12e\ncontact_force_master_y %.12e\ncontact_force_master_z %.12e\n", (double)st.forceMaster[0], (double)st.forceMaster[1], (double)st.forceMaster[2]));
+    PetscCall(PetscViewerASCIIPrintf(v, "contact_remote_elements %" PetscInt_FMT "\n", st.remoteElements));
+  }
+  PetscCall(PetscViewerASCIIPrintf(v, "contact_peak_pressure %.12e\ncontact_radius %.10e\n", (double)st.peakPressure, (double)st.contactRadius));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode SPContactDestroy(SPContact *contact)
 {
   SPContact c = *contact;
 
   PetscFunctionBeginUser;
   if (!c) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCall(VecDestroy(&c->shift));
-  PetscCall(VecDestroy(&c->shiftSaved));
-  PetscCall(VecDestroy(&c->pressure));
-  PetscCall(DMDestroy(&c->dmC));
-  if (c->dmC) {
-    PetscCall(PetscFree5(c->vertex, c->area, c->eps, c->coord, c->gap));
-    PetscCall(PetscFree5(c->normal, c->active, c->activePrev, c->inactiveCount, c->nhist));
-    PetscCall(PetscFree2(c->histS, c->histG));
-    PetscCall(PetscFree2(c->h, c->gapStart));
-    PetscCall(PetscFree5(c->sdof, c->pairMask, c->onObstacle, c->primary, c->facet));
-    PetscCall(PetscFree5(c->xi, c->xs, c->press, c->fpt, c->known));
-  }
+  if (c->dmC) PetscCall(SPContactPointsDestroy(c));
   PetscCall(VecDestroy(&c->Fc));
   PetscCall(VecDestroy(&c->fvec));
   PetscCall(SPContactPairsDestroy(c));

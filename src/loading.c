@@ -1,6 +1,8 @@
 /* Load stepping: the load factor goes 1/N, 2/N, ..., 1 and scales Neumann loads, Dirichlet values
-   and obstacle motion; shifts carry over. A step whose solve fails is halved (bounded), then the
-   run stops with a clear message; converged steps keep their output. */
+   and obstacle motion; shifts carry over. Inside a step, methods that update their shifts after a
+   converged solve (augmented Lagrangian) repeat the solve until their update is done or its budget
+   is spent. A step that fails either way is halved (bounded), then the run stops with a clear
+   message; converged steps keep their output. */
 #include <spcontact-impl.h>
 
 static PetscErrorCode SolveStep(SPApp app, PetscReal load, PetscInt step, Vec ubackup, PetscBool *ok)
@@ -15,6 +17,13 @@ static PetscErrorCode SolveStep(SPApp app, PetscReal load, PetscInt step, Vec ub
   PetscCall(SPOutputGetHistoryFile(app->output, &fp));
   PetscCall(SPSolverSetHistory(app->solver, fp, step));
   PetscCall(SPSolverSolve(app->solver, app->u, &reason));
+  for (PetscInt k = 0; reason > 0; ++k) { /* the method's update after a converged solve */
+    PetscBool again, failed;
+    PetscCall(SPContactSolveUpdate(app->contact, app->u, k, &again, &failed));
+    if (failed) reason = SNES_DIVERGED_MAX_IT;
+    if (!again) break;
+    PetscCall(SPSolverSolve(app->solver, app->u, &reason));
+  }
   *ok = reason > 0 ? PETSC_TRUE : PETSC_FALSE;
   if (!*ok) {
     PetscCall(PetscPrintf(app->comm, "load step %" PetscInt_FMT " (load factor %g): solve did not converge (%s)\n", step, (double)load, SNESConvergedReasons[reason]));

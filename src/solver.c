@@ -167,7 +167,7 @@ static PetscErrorCode FormFunction(SNES snes, Vec X, Vec F, void *ctx)
   if (!s->reuse) PetscCall(BulkResidual(s, locX, locF));
   if (on) {
     PetscCall(PetscLogEventBegin(s->log->contactAssembly, 0, 0, 0, 0));
-    PetscCall(SPContactAddResidual(s->contact, locX, locF));
+    PetscCall(SPContactAddResidual(s->contact, X, locF));
     PetscCall(PetscLogEventEnd(s->log->contactAssembly, 0, 0, 0, 0));
   }
   PetscCall(VecZeroEntries(F));
@@ -192,7 +192,7 @@ static PetscErrorCode FormJacobian(SNES snes, Vec X, Mat J, Mat P, void *ctx)
 
   PetscFunctionBeginUser;
   PetscCall(SPProblemGetLocalState(s->problem, X, &locX));
-  PetscCall(SPContactSetUpJacobian(s->contact, locX, P, s->K)); /* contact-pair couplings in the pattern of P (and K) */
+  PetscCall(SPContactSetUpJacobian(s->contact, X, P, s->K)); /* contact-pair couplings in the pattern of P (and K) */
   if (s->reuse) {
     PetscCall(LinearParts(s));
     PetscCall(PetscLogEventBegin(s->log->bulkJacobian, 0, 0, 0, 0));
@@ -202,7 +202,7 @@ static PetscErrorCode FormJacobian(SNES snes, Vec X, Mat J, Mat P, void *ctx)
   PetscCall(SPContactIsActive(s->contact, &on));
   if (on) {
     PetscCall(PetscLogEventBegin(s->log->contactAssembly, 0, 0, 0, 0));
-    PetscCall(SPContactAddJacobian(s->contact, locX, P));
+    PetscCall(SPContactAddJacobian(s->contact, X, P));
     PetscCall(PetscLogEventEnd(s->log->contactAssembly, 0, 0, 0, 0));
   }
   if (J != P) {
@@ -237,13 +237,12 @@ static PetscErrorCode LogIteration(SPSolver s, PetscInt it, PetscReal fnorm)
 
   PetscFunctionBeginUser;
   PetscCall(SPContactIsActive(s->contact, &on));
-  if (on) st = s->contact->stats;
+  if (on) PetscCall(SPContactGetIterationStats(s->contact, &st));
   PetscCall(SNESGetLinearSolveIterations(s->snes, &lits));
   if (it == 0) s->lastLinear = 0;
   lits -= s->lastLinear;
   s->lastLinear += lits;
-  if (on && s->contact->monitor)
-    PetscCall(PetscPrintf(PetscObjectComm((PetscObject)s->dm), "  contact %3" PetscInt_FMT " |F| %.6e active %" PetscInt_FMT " changed %" PetscInt_FMT " max_penetration %.6e gap_error %.6e max_shift_change %.6e\n", it, (double)fnorm, st.activePoints, st.activeChanged, (double)st.maxPenetration, (double)st.gapError, (double)st.maxShiftChange));
+  if (on) PetscCall(SPContactMonitor(s->contact, it, fnorm));
   if (s->history)
     PetscCall(PetscFPrintf(PetscObjectComm((PetscObject)s->dm), s->history, "%" PetscInt_FMT ",%" PetscInt_FMT ",%" PetscInt_FMT ",%.10e,%" PetscInt_FMT ",%.10e,%.10e,%" PetscInt_FMT "\n", s->step, st.augmentations, it, (double)fnorm, st.activePoints, (double)st.maxPenetration, (double)st.maxShiftChange, lits));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -373,26 +372,10 @@ PetscErrorCode SPSolverSetHistory(SPSolver s, FILE *fp, PetscInt step)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* One Newton solve, wrapped in the augmentation loop for alm. */
-static PetscErrorCode NewtonSolve(SPSolver s, Vec u, SNESConvergedReason *reason)
-{
-  PetscInt  its, lits;
-  PetscBool on;
-
-  PetscFunctionBeginUser;
-  PetscCall(SPContactIsActive(s->contact, &on));
-  if (on) PetscCall(SPContactBeginSolve(s->contact, u));
-  PetscCall(SNESSolve(s->snes, NULL, u));
-  PetscCall(SNESGetConvergedReason(s->snes, reason));
-  PetscCall(SNESGetIterationNumber(s->snes, &its));
-  PetscCall(SNESGetLinearSolveIterations(s->snes, &lits));
-  s->newtonTotal += its;
-  s->linearTotal += lits;
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
+/* One Newton solve at the current load factor and contact state */
 PetscErrorCode SPSolverSolve(SPSolver s, Vec u, SNESConvergedReason *reason)
 {
+  PetscInt  its, lits, nf;
   PetscBool on;
 
   PetscFunctionBeginUser;
@@ -401,27 +384,24 @@ PetscErrorCode SPSolverSolve(SPSolver s, Vec u, SNESConvergedReason *reason)
     s->checkFast = PETSC_FALSE;
   }
   PetscCall(SPContactIsActive(s->contact, &on));
-  PetscCall(NewtonSolve(s, u, reason));
-  if (!on || !s->contact->entry->augments) PetscFunctionReturn(PETSC_SUCCESS);
-  for (PetscInt k = 0; *reason > 0; ++k) {
-    PetscBool done;
-    PetscCall(SPContactAugment(s->contact, u, &done));
-    if (done) break;
-    if (k >= s->contact->almMax) {
-      PetscCall(PetscPrintf(PetscObjectComm((PetscObject)s->dm), "alm: gap tolerance %g not reached after %" PetscInt_FMT " augmentations (gap error %g); raise -contact_alm_max\n", (double)s->contact->gapTol, k, (double)s->contact->stats.gapError));
-      *reason = SNES_DIVERGED_MAX_IT;
-      break;
-    }
-    PetscCall(NewtonSolve(s, u, reason));
-  }
+  if (on) PetscCall(SPContactBeginSolve(s->contact, u));
+  PetscCall(SNESSolve(s->snes, NULL, u));
+  PetscCall(SNESGetConvergedReason(s->snes, reason));
+  PetscCall(SNESGetIterationNumber(s->snes, &its));
+  PetscCall(SNESGetLinearSolveIterations(s->snes, &lits));
+  PetscCall(SNESGetNumberFunctionEvals(s->snes, &nf)); /* counted from 0 in every SNESSolve */
+  s->newtonTotal += its;
+  s->linearTotal += lits;
+  s->funcTotal += nf;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode SPSolverGetCounts(SPSolver s, PetscInt *newton, PetscInt *linear)
+PetscErrorCode SPSolverGetCounts(SPSolver s, PetscInt *newton, PetscInt *linear, PetscInt *functions)
 {
   PetscFunctionBeginUser;
   if (newton) *newton = s->newtonTotal;
   if (linear) *linear = s->linearTotal;
+  if (functions) *functions = s->funcTotal;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -4,19 +4,24 @@
      force on the body      A p n,   p = -eps min(0, g + s)
      residual contribution  r = A eps min(0, g + s) dg/du,  dg/du = n
      tangent                K = A eps [ H(-(g+s)) n n^T + min(0, g + s) d2g/du2 ]
-   A point is active when g + s <= 0 (so a point that just touches carries stiffness). */
+   A point is active when g + s <= 0 (so a point that just touches carries stiffness).
+   Laws are apart from methods: a law maps (g, s, eps) to (p, k); the element below only needs those. */
 #ifndef SP_KERNELS_CONTACT_LAW_H
 #define SP_KERNELS_CONTACT_LAW_H
 #include <kernels/tensor.h>
 
-static inline PetscBool SPContactLawActive(PetscReal g, PetscReal s)
-{
-  return (g + s <= 0.0) ? PETSC_TRUE : PETSC_FALSE;
-}
+/* A normal contact law: pressure p(g, s) >= 0 for penalty eps, and its stiffness k = -dp/dg. A
+   point is active (carries stiffness) where k > 0. Methods pick a law (SPMethod.law). */
+typedef struct {
+  const char *name;
+  void (*traction)(PetscReal g, PetscReal s, PetscReal eps, PetscReal *p, PetscReal *k);
+} SPNormalLaw;
 
-static inline PetscReal SPContactLawPressure(PetscReal g, PetscReal s, PetscReal eps)
+/* The shifted penalty law p = -eps min(0, g + s); plain penalty is s = 0 */
+static inline void SPShiftedPenaltyTraction(PetscReal g, PetscReal s, PetscReal eps, PetscReal *p, PetscReal *k)
 {
-  return -eps * PetscMin(0.0, g + s);
+  *p = -eps * PetscMin(0.0, g + s);
+  *k = g + s <= 0.0 ? eps : 0.0;
 }
 
 typedef enum { SP_OBSTACLE_PLANE, SP_OBSTACLE_SPHERE, SP_OBSTACLE_CYLINDER } SPObstacleType;
@@ -57,16 +62,16 @@ static inline void SPObstacleGap(const SPObstacle *ob, PetscInt dim, PetscReal l
       for (PetscInt j = 0; j < dim; ++j) Hg[i * dim + j] = (P[i * dim + j] - n[i] * n[j]) / r;
 }
 
-/* Residual (nd) and tangent (nd x nd) of one contact element of area A: the dofs it touches are
-   the slave vertex (and, for a contact pair, the master facet's vertices); N = dg/du (nd) and
-   Hg = d2g/du2 (nd x nd). Against a rigid obstacle nd = dim and N = n. */
-static inline void SPContactLawElement(PetscInt nd, PetscReal A, PetscReal eps, PetscReal g, PetscReal s, const PetscReal N[], const PetscReal Hg[], PetscReal r[], PetscReal K[])
+/* Residual (nd) and tangent (nd x nd) of one contact element of area A carrying pressure p with
+   stiffness k = -dp/dg: the dofs it touches are the slave vertex (and, for a contact pair, the
+   master facet's vertices); N = dg/du (nd) and Hg = d2g/du2 (nd x nd). Against a rigid obstacle
+   nd = dim and N = n.  r = -A p N,  K = A (k N N^T - p Hg). */
+static inline void SPContactElement(PetscInt nd, PetscReal A, PetscReal p, PetscReal k, const PetscReal N[], const PetscReal Hg[], PetscReal r[], PetscReal K[])
 {
-  const PetscReal m = PetscMin(0.0, g + s), h = SPContactLawActive(g, s) ? 1.0 : 0.0;
   for (PetscInt i = 0; i < nd; ++i) {
-    if (r) r[i] = A * eps * m * N[i];
+    if (r) r[i] = -A * p * N[i];
     if (K)
-      for (PetscInt j = 0; j < nd; ++j) K[i * nd + j] = A * eps * (h * N[i] * N[j] + m * Hg[i * nd + j]);
+      for (PetscInt j = 0; j < nd; ++j) K[i * nd + j] = A * (k * N[i] * N[j] - p * Hg[i * nd + j]);
   }
 }
 #endif

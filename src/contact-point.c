@@ -1,0 +1,277 @@
+/* The contact-point records: which vertices are contact points, their fixed data, and their
+   geometry, evaluated once per iterate. SPContactEvaluate remembers the displacement and load
+   factor of its last evaluation (a copy of the vector) and returns at once when asked again for
+   the same state, so the residual, Jacobian, shift update,
+   convergence test and output share one evaluation and, for contact pairs, one master exchange.
+   The state part of a record (shifts, status) is saved at the start of a load step and restored
+   on a cut-back. */
+#include <spcontact-impl.h>
+
+/* dmC: a clone of the mesh with one dof on every vertex of the (completed) slave label */
+static PetscErrorCode CreatePointDM(SPContact c, DMLabel slave)
+{
+  PetscSection s;
+  PetscInt     pStart, pEnd, vStart, vEnd;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMClone(c->dm, &c->dmC));
+  PetscCall(DMPlexGetChart(c->dm, &pStart, &pEnd));
+  PetscCall(DMPlexGetDepthStratum(c->dm, 0, &vStart, &vEnd));
+  PetscCall(PetscSectionCreate(PetscObjectComm((PetscObject)c->dm), &s));
+  PetscCall(PetscSectionSetChart(s, pStart, pEnd));
+  for (PetscInt v = vStart; v < vEnd; ++v) {
+    PetscInt val;
+    PetscCall(DMLabelGetValue(slave, v, &val));
+    if (val == 1) PetscCall(PetscSectionSetDof(s, v, 1));
+  }
+  PetscCall(PetscSectionSetUp(s));
+  PetscCall(DMSetLocalSection(c->dmC, s));
+  PetscCall(PetscSectionDestroy(&s));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The owned slave vertices, in the order of the global contact-point layout, and their coordinates */
+static PetscErrorCode CollectPoints(SPContact c)
+{
+  PetscSection       gs, cs;
+  PetscInt           vStart, vEnd;
+  Vec                coords, v;
+  const PetscScalar *ca;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMGetGlobalSection(c->dmC, &gs));
+  PetscCall(DMPlexGetDepthStratum(c->dm, 0, &vStart, &vEnd));
+  PetscCall(DMCreateGlobalVector(c->dmC, &v));
+  PetscCall(VecGetLocalSize(v, &c->n));
+  PetscCall(VecGetOwnershipRange(v, &c->rstart, NULL));
+  PetscCall(VecDestroy(&v));
+  PetscCall(PetscCalloc3(c->n, &c->pt, c->n, &c->saved, c->n, &c->gapStart));
+  PetscCall(PetscCalloc1(c->n * SP_KNOWN_FACETS, &c->known));
+  for (PetscInt i = 0; i < c->n * SP_KNOWN_FACETS; ++i) c->known[i] = -1;
+  PetscCall(DMGetCoordinatesLocal(c->dm, &coords));
+  PetscCall(DMGetCoordinateSection(c->dm, &cs));
+  PetscCall(VecGetArrayRead(coords, &ca));
+  for (PetscInt v = vStart; v < vEnd; ++v) {
+    PetscInt dof, off, coff, k;
+    PetscCall(PetscSectionGetDof(gs, v, &dof));
+    PetscCall(PetscSectionGetOffset(gs, v, &off));
+    if (dof <= 0 || off < 0) continue; /* not a slave vertex, or owned by another rank */
+    k                = off - c->rstart;
+    c->pt[k].vertex  = v;
+    c->pt[k].geo.elem = SP_ELEM_NONE;
+    PetscCall(PetscSectionGetOffset(cs, v, &coff));
+    for (PetscInt d = 0; d < c->dim; ++d) c->pt[k].X[d] = PetscRealPart(ca[coff + d]);
+  }
+  PetscCall(VecRestoreArrayRead(coords, &ca));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Which slave sets each point belongs to: the obstacles' and each pair's (bit k of pairMask) */
+static PetscErrorCode MarkPoints(SPContact c)
+{
+  DMLabel lab;
+
+  PetscFunctionBeginUser;
+  if (c->nob) {
+    PetscCall(SPMeshCreateCompletedLabel(c->dm, c->label, c->nvalues, c->values, "spcontact_obstacle_slave", &lab));
+    for (PetscInt i = 0; i < c->n; ++i) {
+      PetscInt val;
+      PetscCall(DMLabelGetValue(lab, c->pt[i].vertex, &val));
+      c->pt[i].onObstacle = c->pt[i].primary = val == 1 ? PETSC_TRUE : PETSC_FALSE;
+    }
+    PetscCall(DMRemoveLabel(c->dm, "spcontact_obstacle_slave", NULL));
+  }
+  for (PetscInt k = 0; k < c->npair; ++k) {
+    const SPPair *p = &c->pair[k];
+    PetscCall(SPMeshCreateCompletedLabel(c->dm, p->label, p->nslave, p->slave, "spcontact_pair_slave", &lab));
+    for (PetscInt i = 0; i < c->n; ++i) {
+      PetscInt val;
+      PetscCall(DMLabelGetValue(lab, c->pt[i].vertex, &val));
+      if (val != 1) continue;
+      c->pt[i].pairMask |= (PetscInt)1 << k;
+      if (!p->mirror) c->pt[i].primary = PETSC_TRUE;
+    }
+    PetscCall(DMRemoveLabel(c->dm, "spcontact_pair_slave", NULL));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Global dofs of each point's vertex (constrained ones negative) */
+static PetscErrorCode PointGlobalDofs(SPContact c)
+{
+  PetscSection ls, gs;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMGetLocalSection(c->dm, &ls));
+  PetscCall(DMGetGlobalSection(c->dm, &gs));
+  for (PetscInt i = 0; i < c->n; ++i) {
+    PetscInt *idx = NULL, nidx;
+    PetscCall(DMPlexGetClosureIndices(c->dm, ls, gs, c->pt[i].vertex, PETSC_TRUE, &nidx, &idx, NULL, NULL));
+    PetscCheck(nidx == c->dim, PETSC_COMM_SELF, PETSC_ERR_PLIB, "vertex with %" PetscInt_FMT " dofs", nidx);
+    for (PetscInt d = 0; d < c->dim; ++d) c->pt[i].sdof[d] = idx[d];
+    PetscCall(DMPlexRestoreClosureIndices(c->dm, ls, gs, c->pt[i].vertex, PETSC_TRUE, &nidx, &idx, NULL, NULL));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The contact points of the slave label `slave` (the union of every slave surface) */
+PetscErrorCode SPContactPointsSetUp(SPContact c, DMLabel slave)
+{
+  PetscFunctionBeginUser;
+  PetscCall(CreatePointDM(c, slave));
+  PetscCall(CollectPoints(c));
+  PetscCall(MarkPoints(c));
+  PetscCall(PointGlobalDofs(c));
+  PetscCall(PetscCalloc2(c->n * 2 * c->params.history, &c->hist, c->n, &c->nhist));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode SPContactPointsDestroy(SPContact c)
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscFree3(c->pt, c->saved, c->gapStart));
+  PetscCall(PetscFree(c->known));
+  PetscCall(PetscFree2(c->hist, c->nhist));
+  PetscCall(VecDestroy(&c->evalX));
+  PetscCall(DMDestroy(&c->dmC));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* An orthonormal tangent basis of the plane normal to n (dim - 1 vectors) */
+static void TangentBasis(PetscInt dim, const PetscReal n[], PetscReal t[2][3])
+{
+  if (dim == 2) {
+    t[0][0] = -n[1], t[0][1] = n[0], t[0][2] = 0.0;
+    return;
+  }
+  { /* t0: the coordinate axis least aligned with n, made orthogonal to n; t1 = n x t0 */
+    PetscInt  k = 0;
+    PetscReal e[3] = {0, 0, 0}, dn, len;
+    for (PetscInt d = 1; d < 3; ++d)
+      if (PetscAbsReal(n[d]) < PetscAbsReal(n[k])) k = d;
+    e[k] = 1.0;
+    dn   = SPDot(3, e, n);
+    for (PetscInt d = 0; d < 3; ++d) t[0][d] = e[d] - dn * n[d];
+    len = SPNorm(3, t[0]);
+    for (PetscInt d = 0; d < 3; ++d) t[0][d] /= len;
+    t[1][0] = n[1] * t[0][2] - n[2] * t[0][1];
+    t[1][1] = n[2] * t[0][0] - n[0] * t[0][2];
+    t[1][2] = n[0] * t[0][1] - n[1] * t[0][0];
+  }
+}
+
+/* Whether X at load factor `load` is the state of the last evaluation: same load factor and the
+   same values (the line search evaluates its work vector W and then copies it into the solution,
+   so the vector's identity says little; comparing the owned values costs one pass). Collective. */
+static PetscErrorCode SameState(SPContact c, Vec X, PetscReal load, PetscBool *same)
+{
+  PetscBool mine = PETSC_FALSE;
+
+  PetscFunctionBeginUser;
+  if (c->evalX && load == c->evalLoad) {
+    const PetscScalar *a, *b;
+    PetscInt           n;
+    PetscCall(VecGetLocalSize(X, &n));
+    PetscCall(VecGetArrayRead(X, &a));
+    PetscCall(VecGetArrayRead(c->evalX, &b));
+    PetscCall(PetscMemcmp(a, b, (size_t)n * sizeof(PetscScalar), &mine));
+    PetscCall(VecRestoreArrayRead(X, &a));
+    PetscCall(VecRestoreArrayRead(c->evalX, &b));
+  }
+  PetscCallMPI(MPI_Allreduce(&mine, same, 1, MPIU_BOOL, MPI_LAND, PetscObjectComm((PetscObject)c->dm)));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Geometry of every point at the global displacement X: deformed position, contact element
+   (closest master facet of its pairs, or the most penetrating obstacle, whichever gives the
+   smaller gap), gap, normal, tangent basis. Collective. */
+PetscErrorCode SPContactEvaluate(SPContact c, Vec X)
+{
+  const PetscScalar *u;
+  PetscReal          load;
+  PetscBool          same;
+  Vec                locX;
+
+  PetscFunctionBeginUser;
+  PetscCall(SPProblemGetLoadFactor(c->problem, &load));
+  PetscCall(SameState(c, X, load, &same));
+  if (same) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(PetscLogEventBegin(c->searchEvent, 0, 0, 0, 0));
+  if (!c->evalX) PetscCall(VecDuplicate(X, &c->evalX));
+  PetscCall(VecCopy(X, c->evalX));
+  c->evalLoad = load;
+  c->evaluations++;
+  PetscCall(SPProblemGetLocalState(c->problem, X, &locX));
+  PetscCall(VecGetArrayRead(locX, &u));
+  PetscCall(SPContactSearch(c, u, load));
+  PetscCall(VecRestoreArrayRead(locX, &u));
+  PetscCall(SPProblemRestoreLocalState(c->problem, &locX));
+  for (PetscInt i = 0; i < c->n; ++i) TangentBasis(c->dim, c->pt[i].geo.normal, c->pt[i].geo.tangent);
+  if (c->evaluations == 1)
+    for (PetscInt i = 0; i < c->n; ++i) c->pt[i].gap0 = c->pt[i].geo.gap;
+  PetscCall(PetscLogEventEnd(c->searchEvent, 0, 0, 0, 0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Whether the tangent includes the second variation of the gap (obstacle curvature; for pairs the
+   variation of the projection point and of the normal). With a penetration of the order of the
+   element size (the start of a load step, or a load-controlled start) that part is strongly
+   indefinite (about -A eps |g + s| / R against the bulk stiffness): CG stops and Newton wanders.
+   Near a solution it gives quadratic convergence. auto: included once a Newton iteration of the
+   current solve left the active set unchanged. */
+PetscBool SPContactGeometricTangent(SPContact c)
+{
+  if (c->tangent == SP_TANGENT_FULL) return PETSC_TRUE;
+  if (c->tangent == SP_TANGENT_FROZEN) return PETSC_FALSE;
+  return c->setSettled;
+}
+
+/* Contact element of point i at the last evaluated state: *nd dofs (global indices, constrained
+   ones negative), effective area A, N = dg/du and (if Hg) d2g/du2. *nd = 0: no element. */
+PetscErrorCode SPContactPointElement(SPContact c, PetscInt i, PetscInt *nd, PetscInt dofs[], PetscReal *A, PetscReal N[], PetscReal Hg[])
+{
+  const PetscInt         dim = c->dim;
+  const SPContactPoint  *p   = &c->pt[i];
+  PetscReal              g, n[3];
+
+  PetscFunctionBeginUser;
+  *nd = 0;
+  *A  = p->area;
+  if (p->geo.elem == SP_ELEM_NONE) PetscFunctionReturn(PETSC_SUCCESS);
+  for (PetscInt d = 0; d < dim; ++d) dofs[d] = p->sdof[d];
+  if (p->geo.elem == SP_ELEM_OBSTACLE) {
+    PetscReal H[9];
+    SPObstacleGap(&c->ob[p->geo.obstacle], dim, c->evalLoad, p->geo.x, &g, N, Hg ? Hg : H);
+    *nd = dim;
+  } else {
+    const SPMasterFacet *f = &c->mf[p->geo.elem];
+    for (PetscInt k = 0; k < f->nv * dim; ++k) dofs[dim + k] = f->dof[k];
+    SPPairGap(dim, f->nv, f->x, p->geo.x, p->geo.xi, &g, n, N, Hg);
+    *nd = dim * (1 + f->nv);
+    if (c->twoPass) *A *= 0.5; /* two-pass: each pass carries half of the point's area */
+  }
+  if (Hg && !SPContactGeometricTangent(c))
+    for (PetscInt k = 0; k < *nd * *nd; ++k) Hg[k] = 0.0;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Warm start across load steps is automatic (the state persists); these support the cut-back. */
+PetscErrorCode SPContactSaveState(SPContact c)
+{
+  PetscFunctionBeginUser;
+  if (!c->enabled) PetscFunctionReturn(PETSC_SUCCESS);
+  for (PetscInt i = 0; i < c->n; ++i) c->saved[i] = c->pt[i].st;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode SPContactRestoreState(SPContact c)
+{
+  PetscFunctionBeginUser;
+  if (!c->enabled) PetscFunctionReturn(PETSC_SUCCESS);
+  for (PetscInt i = 0; i < c->n; ++i) {
+    c->pt[i].st               = c->saved[i];
+    c->pt[i].st.inactiveCount = 0;
+    c->nhist[i]               = 0;
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
