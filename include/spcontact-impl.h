@@ -50,12 +50,13 @@ PETSC_EXTERN PetscErrorCode SPBCAddToDS(DM, PetscInt, SPBC[], PetscScalar[]);
 
 /* Enforcement methods (src/methods/<name>.c, table in src/contact-methods.c). A method is a normal
    law (traction and its tangent) plus an update rule for the point's shift and the moment it runs:
-   never (penalty), at every Newton-iteration boundary (shifted), or after every converged inner
-   solve (alm, the outer loop in loading.c). Nothing outside those files names a method. */
+   never, at every Newton-iteration boundary, or after every converged inner solve (the outer loop
+   is in loading.c). Nothing outside those files names a method. */
 typedef enum { SP_UPDATE_NONE, SP_UPDATE_NEWTON, SP_UPDATE_SOLVE } SPUpdateTiming;
 typedef struct {
   PetscInt history;    /* (s, g) pairs kept per point for the update rule (>= 1) */
   PetscInt maxUpdates; /* SP_UPDATE_SOLVE: updates per load step before the step fails */
+  const char *maxOption; /* the option that sets maxUpdates (named in the failure message) */
 } SPMethodParams;
 typedef struct {
   const char       *name, *help;

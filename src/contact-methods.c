@@ -4,4 +4,5 @@
 
 const SPNormalLaw SPLawShiftedPenalty = {"shifted_penalty", SPShiftedPenaltyTraction};
 
-const SPMethod *const SPMethodTable[] = {&SPMethodPenalty, &SPMethodShifted, &SPMethodShiftedRegression, &SPMethodALM, NULL};
+/* the first row is the default method */
+const SPMethod *const SPMethodTable[] = {&SPMethodShifted, &SPMethodPenalty, &SPMethodShiftedRegression, &SPMethodALM, NULL};

@@ -183,7 +183,7 @@ PetscErrorCode SPContactSolveUpdate(SPContact c, Vec X, PetscInt done, PetscBool
   PetscCall(Bookkeep(c, 0.0, PETSC_FALSE));
   if (c->stats.gapError <= c->gapTol) PetscFunctionReturn(PETSC_SUCCESS);
   if (done >= c->params.maxUpdates) {
-    PetscCall(PetscPrintf(PetscObjectComm((PetscObject)c->dm), "%s: gap tolerance %g not reached after %" PetscInt_FMT " updates (gap error %g); raise the method's update limit (-contact_alm_max)\n", c->method->name, (double)c->gapTol, done, (double)c->stats.gapError));
+    PetscCall(PetscPrintf(PetscObjectComm((PetscObject)c->dm), "%s: gap tolerance %g not reached after %" PetscInt_FMT " updates (gap error %g); raise %s\n", c->method->name, (double)c->gapTol, done, (double)c->stats.gapError, c->params.maxOption));
     *failed = PETSC_TRUE;
     PetscFunctionReturn(PETSC_SUCCESS);
   }

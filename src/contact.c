@@ -13,7 +13,7 @@ PetscErrorCode SPContactCreate(DM dm, SPProblem problem, SPContact *contact)
   PetscCall(PetscNew(&c));
   c->dm      = dm;
   c->problem = problem;
-  c->method  = &SPMethodShifted;
+  c->method  = SPMethodTable[0]; /* the table's first row is the default */
   c->alpha   = 10.0;
   c->gapTol  = 1e-10;
   c->stepCap = 1.0;
@@ -97,7 +97,7 @@ PetscErrorCode SPContactSetFromOptions(SPContact c)
   PetscCall(PetscOptionsIntArray("-contact_values", "Label values of the slave boundary", "SPContactSetFromOptions", c->values, &c->nvalues, &setValues));
   PetscCall(PetscOptionsReal("-contact_penalty", "Absolute penalty eps per unit area (stress/length); default: alpha E / h", "SPContactSetFromOptions", c->penalty, &c->penalty, &setPenalty));
   PetscCall(PetscOptionsReal("-contact_alpha", "Penalty factor: eps = alpha E / h, h the mean slave facet size at the point", "SPContactSetFromOptions", c->alpha, &c->alpha, NULL));
-  PetscCall(PetscOptionsReal("-contact_gap_tol", "Shifted/alm methods: converged only when no point penetrates more than gap_tol and every active point has |gap| <= gap_tol", "SPContactSetFromOptions", c->gapTol, &c->gapTol, NULL));
+  PetscCall(PetscOptionsReal("-contact_gap_tol", "Methods that update the shift: converged only when no point penetrates more than gap_tol and every active point has |gap| <= gap_tol", "SPContactSetFromOptions", c->gapTol, &c->gapTol, NULL));
   PetscCall(PetscOptionsReal("-contact_step_cap", "Newton step control: scale a step so no point penetrates deeper than step_cap x h in one step (0: off)", "SPContactSetFromOptions", c->stepCap, &c->stepCap, NULL));
   PetscCall(PetscOptionsBool("-contact_safeguard", "Update the shift only of points active in both the previous and the new iterate (method.md 4.1); false only to demonstrate chatter", "SPContactSetFromOptions", c->safeguard, &c->safeguard, NULL));
   PetscCall(PetscOptionsBool("-contact_shift_settled", "In-Newton shift update only at iterations whose active set did not change (the contraction rate holds only then)", "SPContactSetFromOptions", c->settled, &c->settled, NULL));
@@ -274,7 +274,7 @@ static PetscErrorCode ViewSetUp(SPContact c, PetscViewer v)
   PetscCall(PetscViewerASCIIPrintf(v, "contact_obstacles %" PetscInt_FMT "\n", c->nob));
   PetscCall(PetscViewerASCIIPrintf(v, "contact_pairs %" PetscInt_FMT "\ncontact_two_pass %s\n", c->nuser, c->twoPass ? "yes" : "no"));
   PetscCall(PetscViewerASCIIPrintf(v, "contact_master_facets %" PetscInt_FMT "\n", c->nmfAll));
-  PetscCall(PetscViewerASCIIPrintf(v, "contact_evaluations %" PetscInt_FMT "\ncontact_step_limits %" PetscInt_FMT "\ncontact_shift_updates %" PetscInt_FMT "\n", evals, c->stepLimits, c->shiftUpdates));
+  PetscCall(PetscViewerASCIIPrintf(v, "contact_evaluations %" PetscInt_FMT "\ncontact_limited_steps %" PetscInt_FMT "\ncontact_shift_updates %" PetscInt_FMT "\n", evals, c->stepLimits, c->shiftUpdates));
   PetscCall(PetscViewerASCIIPrintf(v, "contact_exchanges %" PetscInt_FMT "\ncontact_exchange_time %.6f\n", c->exchanges, (double)tmax));
   PetscCall(PetscViewerASCIIPrintf(v, "contact_exchange_facets_per_rank %.1f\n", c->exchanges ? (double)rec / (double)(c->exchanges * size) : 0.0));
   PetscCall(PetscViewerASCIIPrintf(v, "contact_pattern_rebuilds %" PetscInt_FMT "\n", c->rebuilds));

@@ -7,6 +7,7 @@ static PetscErrorCode SetFromOptions(PetscOptionItems *PetscOptionsObject, SPMet
 {
   PetscFunctionBeginUser;
   p->maxUpdates = 30;
+  p->maxOption  = "-contact_alm_max";
   PetscCall(PetscOptionsInt("-contact_alm_max", "alm: maximum number of augmentations per load step", "SPContactSetFromOptions", p->maxUpdates, &p->maxUpdates, NULL));
   PetscCheck(p->maxUpdates >= 1, PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "-contact_alm_max %" PetscInt_FMT ": need at least 1 augmentation", p->maxUpdates);
   PetscFunctionReturn(PETSC_SUCCESS);
