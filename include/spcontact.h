@@ -62,7 +62,7 @@ typedef struct {
   PetscInt  remoteElements; /* contact pairs: elements whose master facet is owned by another rank */
 } SPContactStats;
 
-PETSC_EXTERN PetscErrorCode SPContactCreate(DM, SPProblem, SPContact *);
+PETSC_EXTERN PetscErrorCode SPContactCreate(DM, SPProblem, PetscLogEvent, SPContact *);
 PETSC_EXTERN PetscErrorCode SPContactSetFromOptions(SPContact);
 PETSC_EXTERN PetscErrorCode SPContactSetUp(SPContact);
 PETSC_EXTERN PetscErrorCode SPContactIsActive(SPContact, PetscBool *);

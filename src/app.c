@@ -38,8 +38,7 @@ PetscErrorCode SPAppSetUp(SPApp a)
   PetscCall(PetscLogStagePush(a->log.setup));
   PetscCall(SPProblemCreate(a->dm, &a->problem));
   PetscCall(SPProblemSetFromOptions(a->problem));
-  PetscCall(SPContactCreate(a->dm, a->problem, &a->contact));
-  a->contact->searchEvent = a->log.contactSearch;
+  PetscCall(SPContactCreate(a->dm, a->problem, a->log.contactSearch, &a->contact));
   PetscCall(SPContactSetFromOptions(a->contact));
   PetscCall(SPOutputCreate(a->dm, &a->output));
   PetscCall(SPOutputSetFromOptions(a->output));

@@ -5,7 +5,8 @@
 static const char *const ObstacleTypes[] = {"plane", "sphere", "cylinder", "SPObstacleType", "SP_OBSTACLE_", NULL};
 static const char *const Tangents[]      = {"auto", "full", "frozen", "SPTangent", "SP_TANGENT_", NULL};
 
-PetscErrorCode SPContactCreate(DM dm, SPProblem problem, SPContact *contact)
+/* search: the log event the contact geometry evaluations are timed under */
+PetscErrorCode SPContactCreate(DM dm, SPProblem problem, PetscLogEvent search, SPContact *contact)
 {
   SPContact c;
 
@@ -13,6 +14,7 @@ PetscErrorCode SPContactCreate(DM dm, SPProblem problem, SPContact *contact)
   PetscCall(PetscNew(&c));
   c->dm      = dm;
   c->problem = problem;
+  c->searchEvent = search;
   c->method  = SPMethodTable[0]; /* the table's first row is the default */
   c->alpha   = 10.0;
   c->gapTol  = 1e-10;
