@@ -66,6 +66,7 @@ typedef struct {
   PetscReal (*update)(PetscInt nh, const PetscReal hs[], const PetscReal hg[]);
   /* the method's own options (may be NULL); every method's are registered, so -help lists them */
   PetscErrorCode (*setFromOptions)(PetscOptionItems *, SPMethodParams *);
+  PetscBool friction; /* applies the same timing to the tangential shift (Coulomb friction) */
 } SPMethod;
 PETSC_EXTERN const SPMethod *const SPMethodTable[];
 PETSC_EXTERN const SPMethod SPMethodPenalty, SPMethodShifted, SPMethodShiftedRegression, SPMethodALM;
@@ -75,6 +76,7 @@ PETSC_EXTERN const SPMethod SPMethodPenalty, SPMethodShifted, SPMethodShiftedReg
 typedef struct {
   char      label[PETSC_MAX_PATH_LEN];
   PetscInt  nslave, slave[SP_MAX_VALUES], nmaster, master[SP_MAX_VALUES];
+  PetscReal mu; /* friction coefficient (default -contact_friction_mu) */
   PetscBool mirror; /* added by -contact_two_pass: the user pair with slave and master swapped */
 } SPPair;
 
@@ -109,14 +111,27 @@ typedef struct {
   PetscReal gap;           /* normal gap (< 0: penetration) */
   PetscReal normal[3];     /* unit normal, pointing from the master (obstacle) to the slave */
   PetscReal tangent[2][3]; /* orthonormal tangent basis (dim - 1 vectors) */
+  PetscReal mu;            /* friction coefficient of the element (0: frictionless) */
+  PetscReal dgT[2];        /* tangential relative displacement in the step, committed basis */
+  PetscBool anchorLost;    /* the anchor facet is not among this rank's master facets */
 } SPPointGeometry;
 typedef struct {
   PetscReal     sN;            /* normal shift (a scaled multiplier: lambda_N = -eps sN) */
   PetscReal     sT[2];         /* tangential shift slots (dim - 1); zero without friction */
-  PetscReal     slip[2];       /* committed tangential slip of the last converged load step */
+  PetscReal     slip[3];       /* tangential slip accumulated over the converged steps (vector) */
+  PetscReal     creep[3];      /* slip accumulated while stuck (reset when the point slips or opens) */
+  PetscReal     tCommit[3];    /* tangential traction at the last converged step (vector) */
   SPPointStatus status;        /* open / stick / slip (frictionless: open or stick = closed) */
   PetscBool     active;        /* g + sN <= 0 at the last bookkeeping */
   PetscInt      inactiveCount; /* consecutive inactive iterates (shift reset after two) */
+  PetscInt      flips;         /* stick/slip changes in this step (status frozen after 3) */
+  /* friction anchor, committed at the last converged step (kept through a cut-back) */
+  PetscBool     anchored;
+  PetscInt      anchor;        /* master facet gid, or -(k + 1) for obstacle k */
+  PetscReal     anchorXi[2];   /* local coordinates of the anchor on its facet */
+  PetscReal     us[3], um[3];  /* slave displacement and anchor (master) displacement at commit */
+  PetscReal     n[3], T[2][3]; /* normal and tangent basis at commit (fixed in the step) */
+  PetscReal     tT[2];         /* tangential traction at commit (penalty restarts from it) */
 } SPPointState;
 typedef struct {
   PetscInt        vertex, sdof[3]; /* plex vertex; global dofs of its displacement (constrained < 0) */
@@ -128,6 +143,9 @@ typedef struct {
   SPPointGeometry geo;
   SPPointState    st;
   PetscReal       press, f[3];     /* recovered pressure and nodal contact force */
+  PetscReal       epsT;            /* tangential penalty alpha_T E / h */
+  PetscReal       t[2];            /* tangential traction of the last evaluated state (basis T) */
+  PetscBool       stick;           /* its return-map status */
 } SPContactPoint;
 
 struct _n_SPContact {
@@ -142,6 +160,10 @@ struct _n_SPContact {
   PetscInt        nob;
   SPObstacle      ob[SP_MAX_OBSTACLES];
   PetscReal       penalty, alpha, gapTol, stepCap;
+  PetscReal       mu, alphaT, creepRtol, slipRtol; /* friction (-contact_friction_*) */
+  PetscReal       obMu[SP_MAX_OBSTACLES];          /* per obstacle (default mu) */
+  PetscBool       friction;                        /* some obstacle or pair has mu > 0 */
+  PetscReal       creepRel;                        /* max stick creep in the step / h, last bookkeeping */
   PetscBool       safeguard, settled;
   PetscBool       monitor;
   PetscInt        dim;
@@ -197,6 +219,20 @@ PETSC_EXTERN PetscErrorCode SPContactComputeStats(SPContact);
 PETSC_EXTERN PetscErrorCode SPContactComputeAreas(SPContact);
 PETSC_EXTERN PetscErrorCode SPContactRecoverForces(SPContact);
 PETSC_EXTERN PetscErrorCode SPContactFacetVertices(DM, PetscInt, PetscInt *, PetscInt[], PetscReal[]);
+/* contact-friction.c */
+#define SP_FRIC_MAXD (3 * (1 + 2 * SP_FACET_MAXV))
+PETSC_EXTERN PetscErrorCode SPFrictionSetFromOptions(PetscOptionItems *, SPContact);
+PETSC_EXTERN PetscErrorCode SPFrictionSetUp(SPContact);
+PETSC_EXTERN void           SPFrictionKinematics(SPContact, PetscInt);
+PETSC_EXTERN PetscErrorCode SPFrictionElementDofs(SPContact, PetscInt, PetscInt *, PetscInt[], PetscReal[], PetscReal[], PetscReal *);
+PETSC_EXTERN void           SPFrictionTraction(SPContact, PetscInt, PetscReal[], PetscReal[], PetscBool *);
+PETSC_EXTERN PetscErrorCode SPFrictionAddResidual(SPContact);
+PETSC_EXTERN PetscErrorCode SPFrictionAddJacobian(SPContact, Mat);
+PETSC_EXTERN PetscErrorCode SPFrictionAnchor(SPContact, PetscBool);
+PETSC_EXTERN PetscErrorCode SPFrictionUpdate(SPContact, PetscReal *);
+PETSC_EXTERN PetscErrorCode SPFrictionBookkeep(SPContact, PetscBool);
+PETSC_EXTERN PetscBool      SPFrictionConverged(SPContact);
+PETSC_EXTERN PetscErrorCode SPFrictionForces(SPContact, Vec, PetscReal[]);
 /* contact-pairs.c */
 PETSC_EXTERN PetscErrorCode SPContactPairsSetFromOptions(SPContact);
 PETSC_EXTERN PetscErrorCode SPContactPairsCheckLabels(SPContact);

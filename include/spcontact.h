@@ -60,6 +60,10 @@ typedef struct {
   PetscReal force[3];
   PetscReal forceMaster[3]; /* contact pairs: force on the master vertices of the user pairs' elements */
   PetscInt  remoteElements; /* contact pairs: elements whose master facet is owned by another rank */
+  PetscInt  stickPoints, slipPoints, statusChanged; /* friction: return-map status, changes since the last iterate */
+  PetscReal maxStickCreep;  /* friction: max |Dg_T| over stick points in the current step */
+  PetscReal maxSlipShiftChange; /* friction: max eps_T |Delta s_T| / (mu p) over slip points at the last update */
+  PetscReal tangentialForce[3]; /* friction: resultant tangential force on the slave bodies */
 } SPContactStats;
 
 PETSC_EXTERN PetscErrorCode SPContactCreate(DM, SPProblem, PetscLogEvent, SPContact *);
@@ -76,6 +80,8 @@ PETSC_EXTERN PetscErrorCode SPContactSolveUpdate(SPContact, Vec, PetscInt, Petsc
 PETSC_EXTERN PetscErrorCode SPContactConverged(SPContact, PetscBool *);
 PETSC_EXTERN PetscErrorCode SPContactGetStats(SPContact, SPContactStats *);
 PETSC_EXTERN PetscErrorCode SPContactGetIterationStats(SPContact, SPContactStats *);
+PETSC_EXTERN PetscErrorCode SPContactHasFriction(SPContact, PetscBool *);
+PETSC_EXTERN PetscErrorCode SPContactCommitStep(SPContact, Vec);
 PETSC_EXTERN PetscErrorCode SPContactMonitor(SPContact, PetscInt, PetscReal);
 PETSC_EXTERN PetscErrorCode SPContactReportStep(SPContact, Vec, PetscInt, PetscReal);
 PETSC_EXTERN PetscErrorCode SPContactSaveState(SPContact);

@@ -69,6 +69,7 @@ PetscErrorCode SPContactAddResidual(SPContact c, Vec X, Vec locF)
     for (PetscInt j = 0; j < nd; ++j) rs[j] = r[j];
     PetscCall(VecSetValues(c->Fc, nd, dofs, rs, ADD_VALUES)); /* negative (constrained) skipped */
   }
+  PetscCall(SPFrictionAddResidual(c));
   PetscCall(VecAssemblyBegin(c->Fc));
   PetscCall(VecAssemblyEnd(c->Fc));
   PetscCall(DMGetLocalVector(c->dm, &L));
@@ -96,6 +97,7 @@ PetscErrorCode SPContactAddJacobian(SPContact c, Vec X, Mat J)
     for (PetscInt j = 0; j < nd * nd; ++j) Ks[j] = K[j];
     PetscCall(MatSetValues(J, nd, dofs, nd, dofs, Ks, ADD_VALUES)); /* constrained dofs are negative: skipped */
   }
+  PetscCall(SPFrictionAddJacobian(c, J));
   PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -136,6 +138,7 @@ PetscErrorCode SPContactRecoverForces(SPContact c)
     if (e >= 0 && (c->mf[e].gid < c->mfStart || c->mf[e].gid >= c->mfStart + c->nmfOwned)) remote++;
     PetscCall(VecSetValues(c->fvec, nd, idx, fs, ADD_VALUES));
   }
+  PetscCall(SPFrictionForces(c, c->fvec, fm));
   PetscCall(VecAssemblyBegin(c->fvec));
   PetscCall(VecAssemblyEnd(c->fvec));
   PetscCallMPI(MPI_Allreduce(fm, c->stats.forceMaster, 3, MPIU_REAL, MPI_SUM, PetscObjectComm((PetscObject)c->dm)));
@@ -143,8 +146,10 @@ PetscErrorCode SPContactRecoverForces(SPContact c)
   PetscCall(VecGetArrayRead(c->fvec, &f));
   for (PetscInt i = 0; i < c->n; ++i) {
     SPContactPoint *pt = &c->pt[i];
+    PetscReal       y[2];
     for (PetscInt d = 0; d < dim; ++d) pt->f[d] = PetscRealPart(f[i * dim + d]);
     pt->press = pt->area > 0.0 ? SPDot(dim, pt->f, pt->geo.normal) / pt->area : 0.0;
+    SPFrictionTraction(c, i, y, pt->t, &pt->stick);
   }
   PetscCall(VecRestoreArrayRead(c->fvec, &f));
   PetscFunctionReturn(PETSC_SUCCESS);

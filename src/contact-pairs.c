@@ -31,7 +31,7 @@
 #define SP_PAIR_END_TOL 1e-2
 
 
-static PetscErrorCode PairSetFromOptions(MPI_Comm comm, PetscInt k, SPPair *p, PetscBool *found)
+static PetscErrorCode PairSetFromOptions(MPI_Comm comm, PetscInt k, PetscReal mu, SPPair *p, PetscBool *found)
 {
   char      prefix[48];
   PetscBool hasS, hasM, hasL;
@@ -41,11 +41,14 @@ static PetscErrorCode PairSetFromOptions(MPI_Comm comm, PetscInt k, SPPair *p, P
   PetscCall(PetscMemzero(p, sizeof(*p)));
   PetscCall(PetscStrcpy(p->label, "Face Sets"));
   p->nslave = p->nmaster = SP_MAX_VALUES;
+  p->mu = mu;
   PetscOptionsBegin(comm, prefix, "Contact pair (deformable-deformable, node-to-segment in 2D, node-to-facet in 3D)", "spcontact");
   PetscCall(PetscOptionsString("-label", "Mesh label of the pair's two surfaces", "SPContactPairsSetFromOptions", p->label, p->label, sizeof(p->label), &hasL));
   PetscCall(PetscOptionsIntArray("-slave_values", "Label values of the slave surface (its vertices are contact points)", "SPContactPairsSetFromOptions", p->slave, &p->nslave, &hasS));
   PetscCall(PetscOptionsIntArray("-master_values", "Label values of the master surface (its facets are projected on)", "SPContactPairsSetFromOptions", p->master, &p->nmaster, &hasM));
+  PetscCall(PetscOptionsReal("-mu", "Coulomb friction coefficient of the pair (default -contact_friction_mu)", "SPContactPairsSetFromOptions", p->mu, &p->mu, NULL));
   PetscOptionsEnd();
+  PetscCheck(p->mu >= 0.0 && !PetscIsInfOrNanReal(p->mu), comm, PETSC_ERR_USER_INPUT, "-%smu %g: the friction coefficient must be a number >= 0", prefix, (double)p->mu);
   if (!hasS) p->nslave = 0;
   if (!hasM) p->nmaster = 0;
   *found = hasS || hasM || hasL ? PETSC_TRUE : PETSC_FALSE;
@@ -68,7 +71,7 @@ PetscErrorCode SPContactPairsSetFromOptions(SPContact c)
   PetscCall(PetscOptionsBool("-contact_two_pass", "Contact pairs: each surface also acts as slave of the other (mirrored pair); each pass carries half of the areas", "SPContactPairsSetFromOptions", c->twoPass, &c->twoPass, NULL));
   PetscOptionsEnd();
   for (c->nuser = 0; c->nuser < SP_MAX_PAIRS; ++c->nuser) {
-    PetscCall(PairSetFromOptions(comm, c->nuser, &c->pair[c->nuser], &found));
+    PetscCall(PairSetFromOptions(comm, c->nuser, c->mu, &c->pair[c->nuser], &found));
     if (!found) break;
   }
   if (found) { /* pair SP_MAX_PAIRS given? */

@@ -10,7 +10,6 @@
    happens during assembly (MAT_NEW_NONZERO_ALLOCATION_ERR stays on). */
 #include <spcontact-impl.h>
 
-#define SP_ELEM_MAXD (3 * (1 + SP_FACET_MAXV))
 
 static PetscBool Known(SPContact c, PetscInt i, PetscInt f)
 {
@@ -31,7 +30,7 @@ static void Remember(SPContact c, PetscInt i, PetscInt f)
 static PetscErrorCode Rebuild(SPContact c, Mat P)
 {
   Mat         pre;
-  PetscInt    m, n, M, N, bs, rstart, rend, maxr = SP_ELEM_MAXD * SP_ELEM_MAXD;
+  PetscInt    m, n, M, N, bs, rstart, rend, maxr = SP_FRIC_MAXD * SP_FRIC_MAXD;
   PetscScalar *zeros;
 
   PetscFunctionBeginUser;
@@ -59,12 +58,16 @@ static PetscErrorCode Rebuild(SPContact c, Mat P)
     PetscCall(MatRestoreRow(P, r, &nc, &cols, NULL));
   }
   for (PetscInt i = 0; i < c->n; ++i) {
-    PetscInt  nd, dofs[SP_ELEM_MAXD];
-    PetscReal A, Nv[SP_ELEM_MAXD];
+    PetscInt  nd, dofs[SP_FRIC_MAXD];
+    PetscReal A, Nv[SP_FRIC_MAXD], BT[2 * SP_FRIC_MAXD];
     if (c->pt[i].geo.elem < 0) continue;
     PetscCall(SPContactPointElement(c, i, &nd, dofs, &A, Nv, NULL));
     PetscCall(MatSetValues(pre, nd, dofs, nd, dofs, zeros, INSERT_VALUES));
     Remember(c, i, c->mf[c->pt[i].geo.elem].gid);
+    if (!c->friction || !c->pt[i].st.anchored || c->pt[i].st.anchor < 0) continue;
+    PetscCall(SPFrictionElementDofs(c, i, &nd, dofs, Nv, BT, &A)); /* the anchor facet's block too */
+    if (nd) PetscCall(MatSetValues(pre, nd, dofs, nd, dofs, zeros, INSERT_VALUES));
+    Remember(c, i, c->pt[i].st.anchor);
   }
   PetscCall(MatAssemblyBegin(pre, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(pre, MAT_FINAL_ASSEMBLY));
@@ -96,8 +99,12 @@ PetscErrorCode SPContactSetUpJacobian(SPContact c, Vec X, Mat P, Mat K)
   if (!c || !c->enabled || !c->npair) PetscFunctionReturn(PETSC_SUCCESS);
   c->Jref = P;
   PetscCall(SPContactEvaluate(c, X));
-  for (PetscInt i = 0; i < c->n && !missing; ++i)
-    if (c->pt[i].geo.elem >= 0 && SPContactPointActive(c, i) && !Known(c, i, c->mf[c->pt[i].geo.elem].gid)) missing = 1;
+  for (PetscInt i = 0; i < c->n && !missing; ++i) {
+    const SPContactPoint *pt = &c->pt[i];
+    if (pt->geo.elem < 0 || !SPContactPointActive(c, i)) continue;
+    if (!Known(c, i, c->mf[pt->geo.elem].gid)) missing = 1;
+    if (c->friction && pt->geo.mu > 0.0 && pt->st.anchored && pt->st.anchor >= 0 && !pt->geo.anchorLost && !Known(c, i, pt->st.anchor)) missing = 1;
+  }
   PetscCallMPI(MPI_Allreduce(&missing, &any, 1, MPIU_INT, MPI_MAX, PetscObjectComm((PetscObject)P)));
   if (!any) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(Rebuild(c, P));

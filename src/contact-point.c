@@ -206,7 +206,10 @@ PetscErrorCode SPContactEvaluate(SPContact c, Vec X)
   PetscCall(SPContactSearch(c, u, load));
   PetscCall(VecRestoreArrayRead(locX, &u));
   PetscCall(SPProblemRestoreLocalState(c->problem, &locX));
-  for (PetscInt i = 0; i < c->n; ++i) TangentBasis(c->dim, c->pt[i].geo.normal, c->pt[i].geo.tangent);
+  for (PetscInt i = 0; i < c->n; ++i) {
+    TangentBasis(c->dim, c->pt[i].geo.normal, c->pt[i].geo.tangent);
+    SPFrictionKinematics(c, i);
+  }
   if (c->evaluations == 1)
     for (PetscInt i = 0; i < c->n; ++i) c->pt[i].gap0 = c->pt[i].geo.gap;
   PetscCall(PetscLogEventEnd(c->searchEvent, 0, 0, 0, 0));

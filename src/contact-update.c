@@ -42,11 +42,11 @@ static PetscErrorCode Bookkeep(SPContact c, PetscReal maxDs, PetscBool compare)
     n[0] += active;
     if (compare) n[1] += active != st->active;
     st->active = active;
-    st->status = active ? SP_POINT_STICK : SP_POINT_OPEN;
     r[0]       = PetscMax(r[0], -g);
     r[2]       = PetscMax(r[2], GapError(g, active));
   }
   PetscCall(Reduce(c, n, r));
+  PetscCall(SPFrictionBookkeep(c, compare));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -55,6 +55,7 @@ PetscErrorCode SPContactBeginSolve(SPContact c, Vec X)
 {
   PetscFunctionBeginUser;
   PetscCall(SPContactEvaluate(c, X));
+  PetscCall(SPFrictionAnchor(c, PETSC_FALSE));
   PetscCall(Bookkeep(c, 0.0, PETSC_FALSE));
   c->setSettled = PETSC_FALSE;
   for (PetscInt i = 0; i < c->n; ++i) c->nhist[i] = 0;
@@ -97,14 +98,14 @@ static PetscReal UpdatePoint(SPContact c, PetscInt i)
    converged state), and, with -contact_shift_settled, only when no point changed its active
    state in the last iteration (the contraction k/(k+eps) of method.md section 2 needs a settled
    active set; an update during a change overshoots). */
-static PetscErrorCode ShiftUpdateApplies(SPContact c, PetscBool *applies)
+static PetscErrorCode ShiftUpdateApplies(SPContact c, PetscBool *applies, PetscBool *settled)
 {
   PetscInt  n = 0, nall;
   PetscReal err = 0.0, errAll;
   MPI_Comm  comm = PetscObjectComm((PetscObject)c->dm);
 
   PetscFunctionBeginUser;
-  *applies = PETSC_FALSE;
+  *applies = *settled = PETSC_FALSE;
   if (c->method->timing != SP_UPDATE_NEWTON) PetscFunctionReturn(PETSC_SUCCESS);
   for (PetscInt i = 0; i < c->n; ++i) {
     const PetscBool active = SPContactPointActive(c, i);
@@ -113,7 +114,8 @@ static PetscErrorCode ShiftUpdateApplies(SPContact c, PetscBool *applies)
   }
   PetscCallMPI(MPI_Allreduce(&n, &nall, 1, MPIU_INT, MPI_SUM, comm));
   PetscCallMPI(MPI_Allreduce(&err, &errAll, 1, MPIU_REAL, MPI_MAX, comm));
-  *applies = errAll > c->gapTol && (nall == 0 || !c->settled) ? PETSC_TRUE : PETSC_FALSE;
+  *settled = nall == 0 || !c->settled ? PETSC_TRUE : PETSC_FALSE;
+  *applies  = errAll > c->gapTol && *settled ? PETSC_TRUE : PETSC_FALSE;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -121,22 +123,23 @@ static PetscErrorCode ShiftUpdateApplies(SPContact c, PetscBool *applies)
    active-set change. *changed says the residual must be recomputed for the new shift. */
 PetscErrorCode SPContactNewtonUpdate(SPContact c, Vec W, PetscBool *changed)
 {
-  PetscReal maxDs = 0.0, all;
-  PetscBool applies;
+  PetscReal maxDs = 0.0, all, dsT = 0.0;
+  PetscBool applies, settled;
 
   PetscFunctionBeginUser;
   PetscCall(SPContactEvaluate(c, W));
-  PetscCall(ShiftUpdateApplies(c, &applies));
+  PetscCall(ShiftUpdateApplies(c, &applies, &settled));
   if (applies)
     for (PetscInt i = 0; i < c->n; ++i) {
       const PetscReal old = c->pt[i].st.sN;
       c->pt[i].st.sN      = UpdatePoint(c, i);
       maxDs               = PetscMax(maxDs, PetscAbsReal(c->pt[i].st.sN - old));
     }
+  if (settled) PetscCall(SPFrictionUpdate(c, &dsT)); /* the tangential shift, after the normal one */
   PetscCall(Bookkeep(c, maxDs, PETSC_TRUE));
   c->setSettled = c->stats.activeChanged == 0 ? PETSC_TRUE : PETSC_FALSE;
   PetscCallMPI(MPI_Allreduce(&maxDs, &all, 1, MPIU_REAL, MPI_MAX, PetscObjectComm((PetscObject)c->dm)));
-  *changed = all > 0.0 ? PETSC_TRUE : PETSC_FALSE;
+  *changed = all > 0.0 || dsT > 0.0 ? PETSC_TRUE : PETSC_FALSE;
   if (*changed) c->shiftUpdates++;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -174,25 +177,30 @@ PetscErrorCode SPContactLimitStep(SPContact c, Vec X, Vec Y, Vec W, PetscBool *c
    method's update budget for the load step is spent. */
 PetscErrorCode SPContactSolveUpdate(SPContact c, Vec X, PetscInt done, PetscBool *again, PetscBool *failed)
 {
-  PetscReal maxDs = 0.0;
+  PetscReal maxDs = 0.0, dsT;
+  PetscBool doneN, creepOK;
 
   PetscFunctionBeginUser;
   *again = *failed = PETSC_FALSE;
   if (!c->enabled || c->method->timing != SP_UPDATE_SOLVE) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(SPContactEvaluate(c, X));
   PetscCall(Bookkeep(c, 0.0, PETSC_FALSE));
-  if (c->stats.gapError <= c->gapTol) PetscFunctionReturn(PETSC_SUCCESS);
+  doneN   = c->stats.gapError <= c->gapTol ? PETSC_TRUE : PETSC_FALSE;
+  creepOK = c->creepRel <= c->creepRtol ? PETSC_TRUE : PETSC_FALSE;
+  if (doneN && !c->friction) PetscFunctionReturn(PETSC_SUCCESS);
   if (done >= c->params.maxUpdates) {
     PetscCall(PetscPrintf(PetscObjectComm((PetscObject)c->dm), "%s: gap tolerance %g not reached after %" PetscInt_FMT " updates (gap error %g); raise %s\n", c->method->name, (double)c->gapTol, done, (double)c->stats.gapError, c->params.maxOption));
     *failed = PETSC_TRUE;
     PetscFunctionReturn(PETSC_SUCCESS);
   }
-  for (PetscInt i = 0; i < c->n; ++i) {
+  for (PetscInt i = 0; i < c->n && !doneN; ++i) {
     SPPointState   *st  = &c->pt[i].st;
     const PetscReal old = st->sN, g = c->pt[i].geo.gap;
     st->sN              = PetscMin(0.0, c->method->update(1, &old, &g));
     maxDs               = PetscMax(maxDs, PetscAbsReal(st->sN - old));
   }
+  PetscCall(SPFrictionUpdate(c, &dsT));
+  if (doneN && creepOK && c->stats.maxSlipShiftChange <= c->slipRtol) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(Bookkeep(c, maxDs, PETSC_FALSE));
   c->stats.augmentations++;
   c->shiftUpdates++;
@@ -207,6 +215,7 @@ PetscErrorCode SPContactConverged(SPContact c, PetscBool *ok)
   PetscFunctionBeginUser;
   *ok = c->stats.activeChanged == 0 ? PETSC_TRUE : PETSC_FALSE;
   if (c->method->timing == SP_UPDATE_NEWTON && c->stats.gapError > c->gapTol) *ok = PETSC_FALSE;
+  if (!SPFrictionConverged(c)) *ok = PETSC_FALSE;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -246,7 +255,7 @@ static PetscErrorCode ContactCentre(SPContact c)
 PetscErrorCode SPContactComputeStats(SPContact c)
 {
   MPI_Comm  comm = PetscObjectComm((PetscObject)c->dm);
-  PetscReal f[3] = {0, 0, 0}, peak = 0.0, rmax = 0.0;
+  PetscReal f[3] = {0, 0, 0}, ft[3] = {0, 0, 0}, peak = 0.0, rmax = 0.0;
 
   PetscFunctionBeginUser;
   PetscCall(SPContactRecoverForces(c));
@@ -254,14 +263,17 @@ PetscErrorCode SPContactComputeStats(SPContact c)
   for (PetscInt i = 0; i < c->n; ++i) {
     const SPContactPoint *pt = &c->pt[i];
     PetscReal             dx[3] = {0, 0, 0};
-    if (pt->primary)
-      for (PetscInt d = 0; d < c->dim; ++d) f[d] += pt->f[d];
+    if (pt->primary) {
+      const PetscReal fn = SPDot(c->dim, pt->f, pt->geo.normal);
+      for (PetscInt d = 0; d < c->dim; ++d) f[d] += pt->f[d], ft[d] += pt->f[d] - fn * pt->geo.normal[d];
+    }
     peak = PetscMax(peak, pt->press);
     if (pt->press <= 0.0) continue;
     for (PetscInt d = 0; d < c->dim; ++d) dx[d] = pt->X[d] - c->centre[d];
     rmax = PetscMax(rmax, SPNorm(c->dim, dx));
   }
   PetscCallMPI(MPI_Allreduce(f, c->stats.force, 3, MPIU_REAL, MPI_SUM, comm));
+  PetscCallMPI(MPI_Allreduce(ft, c->stats.tangentialForce, 3, MPIU_REAL, MPI_SUM, comm));
   PetscCallMPI(MPI_Allreduce(&peak, &c->stats.peakPressure, 1, MPIU_REAL, MPI_MAX, comm));
   PetscCallMPI(MPI_Allreduce(&rmax, &c->stats.contactRadius, 1, MPIU_REAL, MPI_MAX, comm));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -309,5 +321,22 @@ PetscErrorCode SPContactReportStep(SPContact c, Vec X, PetscInt step, PetscReal 
     if (c->pt[i].geo.elem != SP_ELEM_NONE) pen = PetscMax(pen, -c->pt[i].geo.gap);
   PetscCallMPI(MPI_Allreduce(&pen, &all, 1, MPIU_REAL, MPI_MAX, PetscObjectComm((PetscObject)c->dm)));
   PetscCall(PetscPrintf(PetscObjectComm((PetscObject)c->dm), "contact_step %" PetscInt_FMT " load %.6f force %.12e %.12e master_force %.12e %.12e max_penetration %.6e peak_pressure %.10e\n", step, (double)load, (double)c->stats.force[0], (double)c->stats.force[1], (double)c->stats.forceMaster[0], (double)c->stats.forceMaster[1], (double)all, (double)c->stats.peakPressure));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* At a converged load step: commit the friction state (anchors, traction, slip) of the state X */
+PetscErrorCode SPContactCommitStep(SPContact c, Vec X)
+{
+  PetscFunctionBeginUser;
+  if (!c->enabled || !c->friction) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(SPContactEvaluate(c, X));
+  PetscCall(SPFrictionAnchor(c, PETSC_TRUE));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode SPContactHasFriction(SPContact c, PetscBool *on)
+{
+  PetscFunctionBeginUser;
+  *on = c && c->enabled && c->friction ? PETSC_TRUE : PETSC_FALSE;
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -18,6 +18,8 @@ PetscErrorCode SPContactCreate(DM dm, SPProblem problem, PetscLogEvent search, S
   c->method  = SPMethodTable[0]; /* the table's first row is the default */
   c->alpha   = 10.0;
   c->gapTol  = 1e-10;
+  c->creepRtol = 1e-10;
+  c->slipRtol  = 1e-8;
   c->stepCap = 1.0;
   c->safeguard = PETSC_TRUE;
   c->settled   = PETSC_TRUE;
@@ -28,7 +30,7 @@ PetscErrorCode SPContactCreate(DM dm, SPProblem problem, PetscLogEvent search, S
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode ObstacleSetFromOptions(MPI_Comm comm, PetscInt i, PetscInt dim, SPObstacle *ob)
+static PetscErrorCode ObstacleSetFromOptions(MPI_Comm comm, PetscInt i, PetscInt dim, SPObstacle *ob, PetscReal *mu)
 {
   char      prefix[48];
   PetscInt  type = 0, n;
@@ -49,7 +51,9 @@ static PetscErrorCode ObstacleSetFromOptions(MPI_Comm comm, PetscInt i, PetscInt
   PetscCall(PetscOptionsReal("-radius", "Sphere/cylinder radius > 0", "SPContactSetFromOptions", ob->radius, &ob->radius, NULL));
   n = 3;
   PetscCall(PetscOptionsRealArray("-motion", "Rigid displacement of the obstacle at load factor 1", "SPContactSetFromOptions", ob->motion, &n, NULL));
+  PetscCall(PetscOptionsReal("-mu", "Coulomb friction coefficient against this obstacle (default -contact_friction_mu)", "SPContactSetFromOptions", *mu, mu, NULL));
   PetscOptionsEnd();
+  PetscCheck(*mu >= 0.0 && !PetscIsInfOrNanReal(*mu), comm, PETSC_ERR_USER_INPUT, "-%smu %g: the friction coefficient must be a number >= 0", prefix, (double)*mu);
   ob->type = (SPObstacleType)type;
   len      = SPNorm(dim, ob->normal);
   PetscCheck(len > 0.0, comm, PETSC_ERR_USER_INPUT, "-%snormal: the normal/axis must be a nonzero vector", prefix);
@@ -86,6 +90,27 @@ static PetscErrorCode MethodSetFromOptions(PetscOptionItems *PetscOptionsObject,
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Friction needs contact and a method that can update a tangential shift */
+static PetscErrorCode CheckFriction(SPContact c)
+{
+  MPI_Comm  comm = PetscObjectComm((PetscObject)c->dm);
+  PetscBool on = c->mu > 0.0;
+  char      ok[256] = "";
+
+  PetscFunctionBeginUser;
+  for (PetscInt k = 0; k < c->nob; ++k) on = on || c->obMu[k] > 0.0;
+  for (PetscInt k = 0; k < c->npair; ++k) on = on || c->pair[k].mu > 0.0;
+  if (!on) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCheck(c->enabled, comm, PETSC_ERR_USER_INPUT, "-contact_friction_mu %g given but the run has no contact: add a slave boundary and an obstacle (-contact_values, -contact_obstacle_0_type) or a pair (-contact_pair_0_slave_values, -contact_pair_0_master_values)", (double)c->mu);
+  for (PetscInt k = 0; SPMethodTable[k]; ++k)
+    if (SPMethodTable[k]->friction) {
+      PetscCall(PetscStrlcat(ok, ok[0] ? ", " : "", sizeof(ok)));
+      PetscCall(PetscStrlcat(ok, SPMethodTable[k]->name, sizeof(ok)));
+    }
+  PetscCheck(c->method->friction, comm, PETSC_ERR_USER_INPUT, "-contact_method %s cannot update a tangential shift: with friction use one of %s", c->method->name, ok);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode SPContactSetFromOptions(SPContact c)
 {
   MPI_Comm  comm = PetscObjectComm((PetscObject)c->dm);
@@ -95,6 +120,7 @@ PetscErrorCode SPContactSetFromOptions(SPContact c)
   PetscFunctionBeginUser;
   PetscOptionsBegin(comm, NULL, "Contact options", "spcontact");
   PetscCall(MethodSetFromOptions(PetscOptionsObject, c));
+  PetscCall(SPFrictionSetFromOptions(PetscOptionsObject, c));
   PetscCall(PetscOptionsString("-contact_label", "Mesh label of the slave boundary", "SPContactSetFromOptions", c->label, c->label, sizeof(c->label), NULL));
   PetscCall(PetscOptionsIntArray("-contact_values", "Label values of the slave boundary", "SPContactSetFromOptions", c->values, &c->nvalues, &setValues));
   PetscCall(PetscOptionsReal("-contact_penalty", "Absolute penalty eps per unit area (stress/length); default: alpha E / h", "SPContactSetFromOptions", c->penalty, &c->penalty, &setPenalty));
@@ -108,6 +134,10 @@ PetscErrorCode SPContactSetFromOptions(SPContact c)
   PetscOptionsEnd();
   if (!setValues) c->nvalues = 0;
   c->tangent = (SPTangent)tangent;
+  if (c->alphaT < 0.0) c->alphaT = c->alpha;
+  PetscCheck(c->mu >= 0.0 && !PetscIsInfOrNanReal(c->mu), comm, PETSC_ERR_USER_INPUT, "-contact_friction_mu %g: the friction coefficient must be a number >= 0", (double)c->mu);
+  PetscCheck(c->alphaT > 0.0, comm, PETSC_ERR_USER_INPUT, "-contact_friction_alpha %g: the tangential penalty factor must be positive", (double)c->alphaT);
+  PetscCheck(c->creepRtol > 0.0 && c->slipRtol > 0.0, comm, PETSC_ERR_USER_INPUT, "-contact_friction_creep_rtol %g, -contact_friction_slip_rtol %g: must be positive", (double)c->creepRtol, (double)c->slipRtol);
   PetscCheck(!setPenalty || c->penalty > 0.0, comm, PETSC_ERR_USER_INPUT, "-contact_penalty %g: the penalty must be positive", (double)c->penalty);
   PetscCheck(c->alpha > 0.0, comm, PETSC_ERR_USER_INPUT, "-contact_alpha %g: the penalty factor must be positive", (double)c->alpha);
   PetscCheck(c->gapTol > 0.0, comm, PETSC_ERR_USER_INPUT, "-contact_gap_tol %g: must be positive", (double)c->gapTol);
@@ -118,10 +148,12 @@ PetscErrorCode SPContactSetFromOptions(SPContact c)
     PetscCall(PetscSNPrintf(name, sizeof(name), "-contact_obstacle_%" PetscInt_FMT "_type", c->nob));
     PetscCall(PetscOptionsHasName(NULL, NULL, name, &has));
     if (!has) break;
-    PetscCall(ObstacleSetFromOptions(comm, c->nob, c->dim, &c->ob[c->nob]));
+    c->obMu[c->nob] = c->mu;
+    PetscCall(ObstacleSetFromOptions(comm, c->nob, c->dim, &c->ob[c->nob], &c->obMu[c->nob]));
   }
   PetscCall(SPContactPairsSetFromOptions(c));
   c->enabled = c->nob > 0 || c->npair > 0 ? PETSC_TRUE : PETSC_FALSE;
+  PetscCall(CheckFriction(c));
   PetscCheck(c->nob > 0 || !setValues, comm, PETSC_ERR_USER_INPUT, "-contact_values given but no obstacle: add -contact_obstacle_0_type plane|sphere|cylinder (deformable bodies: -contact_pair_0_slave_values/-contact_pair_0_master_values)");
   PetscCheck(c->nob == 0 || setValues, comm, PETSC_ERR_USER_INPUT, "contact obstacle given but no slave boundary: add -contact_values <label values> (and -contact_label)");
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -153,6 +185,7 @@ PetscErrorCode SPContactSetUp(SPContact c)
     PetscCall(SPMeshCreateCompletedLabel(c->dm, c->pair[k].label, c->pair[k].nslave, c->pair[k].slave, "spcontact_slave", &slave));
   PetscCall(SPContactPointsSetUp(c, slave));
   PetscCall(SPContactComputeAreas(c));
+  PetscCall(SPFrictionSetUp(c));
   PetscCall(DMCreateGlobalVector(c->dm, &c->Fc));
   PetscCall(VecCreateMPI(comm, c->n * c->dim, PETSC_DETERMINE, &c->fvec));
   PetscCall(VecSetOption(c->fvec, VEC_IGNORE_NEGATIVE_INDICES, PETSC_TRUE));
@@ -309,6 +342,12 @@ PetscErrorCode SPContactView(SPContact c, PetscViewer v)
     PetscCall(PetscViewerASCIIPrintf(v, "contact_remote_elements %" PetscInt_FMT "\n", st.remoteElements));
   }
   PetscCall(PetscViewerASCIIPrintf(v, "contact_peak_pressure %.12e\ncontact_radius %.10e\n", (double)st.peakPressure, (double)st.contactRadius));
+  PetscCall(PetscViewerASCIIPrintf(v, "contact_friction_mu %g\ncontact_friction %s\n", (double)c->mu, c->friction ? "yes" : "no"));
+  if (c->friction) {
+    PetscCall(PetscViewerASCIIPrintf(v, "contact_friction_alpha %g\ncontact_stick_points %" PetscInt_FMT "\ncontact_slip_points %" PetscInt_FMT "\n", (double)c->alphaT, st.stickPoints, st.slipPoints));
+    PetscCall(PetscViewerASCIIPrintf(v, "contact_max_stick_creep %.10e\n", (double)st.maxStickCreep));
+    PetscCall(PetscViewerASCIIPrintf(v, "contact_tangential_force_x %.12e\ncontact_tangential_force_y %.12e\ncontact_tangential_force_z %.12e\n", (double)st.tangentialForce[0], (double)st.tangentialForce[1], (double)st.tangentialForce[2]));
+  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

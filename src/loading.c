@@ -61,6 +61,7 @@ PetscErrorCode SPLoadingRun(SPApp app)
     done = load;
     step++;
     cuts = 0;
+    PetscCall(SPContactCommitStep(app->contact, app->u));
     PetscCall(PetscLogStagePush(app->log.output)); /* stage times are exclusive: output leaves "SP solve" */
     PetscCall(SPOutputWriteStep(app->output, app->problem, app->u, app->contact));
     PetscCall(PetscLogStagePop());

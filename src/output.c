@@ -91,7 +91,7 @@ PetscErrorCode SPOutputOpen(SPOutput o)
   PetscCall(CheckDirectory(o));
   PetscCall(PetscSNPrintf(file, sizeof(file), "%s.csv.part", o->prefix));
   PetscCall(PetscFOpen(comm, file, "w", &o->csv));
-  PetscCall(PetscFPrintf(comm, o->csv, "step,augmentation,iteration,residual_norm,active_points,max_penetration,max_shift_change,linear_iterations\n"));
+  PetscCall(PetscFPrintf(comm, o->csv, "step,augmentation,iteration,residual_norm,active_points,max_penetration,max_shift_change,linear_iterations,stick_points,slip_points,max_stick_creep\n"));
   if (!o->enabled) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(DMGetDimension(o->dm, &dim));
   PetscCall(VertexDM(o->dm, dim, &o->dmV));

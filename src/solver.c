@@ -244,7 +244,7 @@ static PetscErrorCode LogIteration(SPSolver s, PetscInt it, PetscReal fnorm)
   s->lastLinear += lits;
   if (on) PetscCall(SPContactMonitor(s->contact, it, fnorm));
   if (s->history)
-    PetscCall(PetscFPrintf(PetscObjectComm((PetscObject)s->dm), s->history, "%" PetscInt_FMT ",%" PetscInt_FMT ",%" PetscInt_FMT ",%.10e,%" PetscInt_FMT ",%.10e,%.10e,%" PetscInt_FMT "\n", s->step, st.augmentations, it, (double)fnorm, st.activePoints, (double)st.maxPenetration, (double)st.maxShiftChange, lits));
+    PetscCall(PetscFPrintf(PetscObjectComm((PetscObject)s->dm), s->history, "%" PetscInt_FMT ",%" PetscInt_FMT ",%" PetscInt_FMT ",%.10e,%" PetscInt_FMT ",%.10e,%.10e,%" PetscInt_FMT ",%" PetscInt_FMT ",%" PetscInt_FMT ",%.10e\n", s->step, st.augmentations, it, (double)fnorm, st.activePoints, (double)st.maxPenetration, (double)st.maxShiftChange, lits, st.stickPoints, st.slipPoints, (double)st.maxStickCreep));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -355,6 +355,13 @@ PetscErrorCode SPSolverSetFromOptions(SPSolver s)
      on |F| crawls there, adding one active point per iteration. */
   PetscCall(SNESGetLineSearch(s->snes, &ls));
   PetscCall(SNESLineSearchSetType(ls, SNESLINESEARCHBASIC));
+  PetscCall(SPContactHasFriction(s->contact, &on));
+  if (on) { /* the slip tangent is non-symmetric: GMRES with the same AMG (-ksp_type overrides) */
+    KSP ksp;
+    PetscCall(SNESGetKSP(s->snes, &ksp));
+    PetscCall(KSPSetType(ksp, KSPGMRES));
+    PetscCall(KSPGMRESSetRestart(ksp, 100));
+  }
   PetscCall(SNESSetFromOptions(s->snes));
   PetscCall(SPContactIsActive(s->contact, &on));
   if (on) {

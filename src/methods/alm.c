@@ -18,6 +18,7 @@ const SPMethod SPMethodALM = {
   .help           = "nested augmented Lagrangian: s <- s + g after each converged Newton solve",
   .timing         = SP_UPDATE_SOLVE,
   .law            = &SPLawShiftedPenalty,
+  .friction       = PETSC_TRUE,
   .update         = SPShiftIncrement,
   .setFromOptions = SetFromOptions,
 };

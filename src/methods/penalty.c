@@ -6,4 +6,5 @@ const SPMethod SPMethodPenalty = {
   .help   = "plain penalty p = -eps min(0, g)",
   .timing = SP_UPDATE_NONE,
   .law    = &SPLawShiftedPenalty,
+  .friction = PETSC_TRUE,
 };

@@ -13,5 +13,6 @@ const SPMethod SPMethodShifted = {
   .help   = "shifted penalty: Delta s = g before each Newton iteration",
   .timing = SP_UPDATE_NEWTON,
   .law    = &SPLawShiftedPenalty,
+  .friction = PETSC_TRUE,
   .update = SPShiftIncrement,
 };

@@ -1,0 +1,389 @@
+/* Coulomb friction with a tangential shift (../shared/docs/friction.md). Per point, in a load step:
+   the tangential relative displacement Dg_T against the anchor committed at the last converged
+   step (linear in u: committed normal and tangent basis), the trial y = -eps_T (Dg_T + s_T), the
+   return map onto mu p. The tangential shift s_T follows the method's timing: frozen at
+   -t_T^n/eps_T (penalty: a stuck point creeps t_T/eps_T), updated s_T <- -t_T/eps_T at every
+   Newton-iteration boundary (shifted: the creep moves into the shift) or after each converged
+   solve (augmented Lagrangian). The anchor, the committed traction and the accumulated slip are
+   state: committed at a converged step, restored by a cut-back. */
+#include <spcontact-impl.h>
+#include <kernels/contact-friction.h>
+
+PetscErrorCode SPFrictionSetFromOptions(PetscOptionItems *PetscOptionsObject, SPContact c)
+{
+  PetscBool setAlphaT;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsReal("-contact_friction_mu", "Coulomb friction coefficient of every obstacle and pair (0: frictionless; per obstacle/pair: -contact_obstacle_<k>_mu, -contact_pair_<k>_mu)", "SPContactSetFromOptions", c->mu, &c->mu, NULL));
+  PetscCall(PetscOptionsReal("-contact_friction_alpha", "Tangential penalty factor: eps_T = alpha_T E / h (default: -contact_alpha)", "SPContactSetFromOptions", c->alphaT, &c->alphaT, &setAlphaT));
+  PetscCall(PetscOptionsReal("-contact_friction_creep_rtol", "Friction, methods that update the shift: converged only when no stuck point moves more than rtol x h in the step", "SPContactSetFromOptions", c->creepRtol, &c->creepRtol, NULL));
+  PetscCall(PetscOptionsReal("-contact_friction_slip_rtol", "Friction, methods that update the shift: converged only when the tangential shift of slipping points changes by at most rtol x mu p / eps_T", "SPContactSetFromOptions", c->slipRtol, &c->slipRtol, NULL));
+  if (!setAlphaT) c->alphaT = -1.0; /* resolved to alpha once -contact_alpha is known */
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Per point eps_T, and whether any obstacle or pair has friction */
+PetscErrorCode SPFrictionSetUp(SPContact c)
+{
+  PetscInt on = 0, all;
+
+  PetscFunctionBeginUser;
+  for (PetscInt i = 0; i < c->n; ++i) c->pt[i].epsT = c->pt[i].eps * c->alphaT / c->alpha;
+  for (PetscInt k = 0; k < c->nob; ++k) on |= c->obMu[k] > 0.0;
+  for (PetscInt k = 0; k < c->npair; ++k) on |= c->pair[k].mu > 0.0;
+  PetscCallMPI(MPI_Allreduce(&on, &all, 1, MPIU_INT, MPI_MAX, PetscObjectComm((PetscObject)c->dm)));
+  c->friction = all ? PETSC_TRUE : PETSC_FALSE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Index in c->mf of the master facet with global number gid, -1 if this rank does not hold it */
+static PetscInt FindFacet(SPContact c, PetscInt hint, PetscInt gid)
+{
+  if (hint >= 0 && c->mf[hint].gid == gid) return hint;
+  for (PetscInt f = 0; f < c->nmf; ++f)
+    if (c->mf[f].gid == gid) return f;
+  return -1;
+}
+
+/* Shape functions of a master facet at local coordinates xi (2D: segment; 3D: tri or quad) */
+static void FacetShape(PetscInt dim, PetscInt nv, const PetscReal xi[], PetscReal N[])
+{
+  PetscReal dN[8], ddN[4];
+  if (dim == 2) N[0] = 1.0 - xi[0], N[1] = xi[0];
+  else SPFacetShape(nv, xi, N, dN, ddN);
+}
+
+/* Displacement of the anchor's master material point at the current state; PETSC_FALSE if the
+   anchor facet is not held by this rank */
+static PetscBool AnchorDisplacement(SPContact c, PetscInt i, PetscReal um[])
+{
+  const SPContactPoint *pt = &c->pt[i];
+  const PetscInt        dim = c->dim;
+  for (PetscInt d = 0; d < 3; ++d) um[d] = 0.0;
+  if (pt->st.anchor < 0) {
+    const SPObstacle *ob = &c->ob[-pt->st.anchor - 1];
+    for (PetscInt d = 0; d < dim; ++d) um[d] = c->evalLoad * ob->motion[d];
+    return PETSC_TRUE;
+  } else {
+    const PetscInt f = FindFacet(c, pt->geo.elem, pt->st.anchor);
+    PetscReal      N[SP_FACET_MAXV];
+    if (f < 0) return PETSC_FALSE;
+    FacetShape(dim, c->mf[f].nv, pt->st.anchorXi, N);
+    for (PetscInt a = 0; a < c->mf[f].nv; ++a)
+      for (PetscInt d = 0; d < dim; ++d) um[d] += N[a] * (c->mf[f].x[a * dim + d] - c->mf[f].X[a * dim + d]);
+    return PETSC_TRUE;
+  }
+}
+
+/* Friction coefficient of point i's current element, and Dg_T at the evaluated state */
+void SPFrictionKinematics(SPContact c, PetscInt i)
+{
+  SPContactPoint *pt  = &c->pt[i];
+  const PetscInt  dim = c->dim, e = pt->geo.elem;
+  PetscReal       um[3], d[3];
+
+  pt->geo.mu     = e == SP_ELEM_OBSTACLE ? c->obMu[pt->geo.obstacle] : (e >= 0 ? c->pair[c->mf[e].pair].mu : 0.0);
+  pt->geo.dgT[0] = pt->geo.dgT[1] = 0.0;
+  pt->geo.anchorLost = PETSC_FALSE;
+  if (!c->friction || !pt->st.anchored) return;
+  if (!AnchorDisplacement(c, i, um)) {
+    pt->geo.anchorLost = PETSC_TRUE;
+    return;
+  }
+  for (PetscInt k = 0; k < dim; ++k) d[k] = (pt->geo.x[k] - pt->X[k] - pt->st.us[k]) - (um[k] - pt->st.um[k]);
+  for (PetscInt a = 0; a < dim - 1; ++a) pt->geo.dgT[a] = SPDot(dim, pt->st.T[a], d);
+}
+
+/* The friction element of point i: the normal element's dofs plus, when the anchor lies on another
+   master facet, that facet's; N = dg/du padded with zeros; BT = dDg_T/du (nt x nd). nd = 0: none. */
+PetscErrorCode SPFrictionElementDofs(SPContact c, PetscInt i, PetscInt *nd, PetscInt dofs[], PetscReal N[], PetscReal BT[], PetscReal *A)
+{
+  const SPContactPoint *pt  = &c->pt[i];
+  const PetscInt        dim = c->dim, nt = dim - 1;
+  PetscInt              nd0, fa = -1, off = 0;
+  PetscReal             Na[SP_FACET_MAXV];
+
+  PetscFunctionBeginUser;
+  PetscCall(SPContactPointElement(c, i, &nd0, dofs, A, N, NULL));
+  *nd = nd0;
+  if (!nd0 || !pt->st.anchored || pt->geo.anchorLost) {
+    *nd = 0;
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  if (pt->st.anchor >= 0) {
+    fa = FindFacet(c, pt->geo.elem, pt->st.anchor);
+    if (fa == pt->geo.elem) off = dim;
+    else {
+      off = nd0;
+      for (PetscInt k = 0; k < c->mf[fa].nv * dim; ++k) dofs[nd0 + k] = c->mf[fa].dof[k];
+      *nd = nd0 + c->mf[fa].nv * dim;
+      for (PetscInt k = nd0; k < *nd; ++k) N[k] = 0.0;
+    }
+    FacetShape(dim, c->mf[fa].nv, pt->st.anchorXi, Na);
+  }
+  for (PetscInt a = 0; a < nt; ++a) {
+    PetscReal *row = &BT[a * *nd];
+    for (PetscInt k = 0; k < *nd; ++k) row[k] = 0.0;
+    for (PetscInt k = 0; k < dim; ++k) row[k] = pt->st.T[a][k];
+    if (fa >= 0)
+      for (PetscInt b = 0; b < c->mf[fa].nv; ++b)
+        for (PetscInt k = 0; k < dim; ++k) row[off + b * dim + k] = -Na[b] * pt->st.T[a][k];
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Trial y and returned traction t of point i at the evaluated state; open points carry none.
+   A point that changed stick/slip more than 3 times in the step keeps its status. */
+void SPFrictionTraction(SPContact c, PetscInt i, PetscReal y[], PetscReal t[], PetscBool *stick)
+{
+  SPContactPoint *pt = &c->pt[i];
+  const PetscInt  nt = c->dim - 1;
+  PetscReal       p, k;
+
+  SPContactPointTraction(c, i, &p, &k);
+  y[0] = y[1] = t[0] = t[1] = 0.0;
+  *stick = PETSC_FALSE;
+  if (pt->geo.mu <= 0.0 || k <= 0.0 || !pt->st.anchored || pt->geo.anchorLost) return;
+  for (PetscInt a = 0; a < nt; ++a) y[a] = -pt->epsT * (pt->geo.dgT[a] + pt->st.sT[a]);
+  *stick = SPCoulombReturn(nt, y, pt->geo.mu * p, t);
+  if (pt->st.flips > 3 && *stick != (pt->st.status == SP_POINT_STICK)) { /* frozen status */
+    const PetscReal ny = SPNorm(nt, y), r = pt->geo.mu * p;
+    *stick = pt->st.status == SP_POINT_STICK ? PETSC_TRUE : PETSC_FALSE;
+    for (PetscInt a = 0; a < nt; ++a) t[a] = *stick ? y[a] : (ny > 0.0 ? r * y[a] / ny : 0.0);
+  }
+}
+
+/* c->Fc += the friction residual of every point (before the assembly of Fc) */
+PetscErrorCode SPFrictionAddResidual(SPContact c)
+{
+  const PetscInt nt = c->dim - 1;
+
+  PetscFunctionBeginUser;
+  if (!c->friction) PetscFunctionReturn(PETSC_SUCCESS);
+  for (PetscInt i = 0; i < c->n; ++i) {
+    PetscInt    nd, dofs[SP_FRIC_MAXD];
+    PetscReal   A, y[2], t[2], N[SP_FRIC_MAXD], BT[2 * SP_FRIC_MAXD], r[SP_FRIC_MAXD];
+    PetscScalar rs[SP_FRIC_MAXD];
+    PetscBool   stick;
+    SPFrictionTraction(c, i, y, t, &stick);
+    if (t[0] == 0.0 && t[1] == 0.0) continue;
+    PetscCall(SPFrictionElementDofs(c, i, &nd, dofs, N, BT, &A));
+    if (!nd) continue;
+    SPFrictionElement(nd, nt, A, c->pt[i].epsT, c->pt[i].geo.mu, 0.0, 0.0, BT, N, y, t, stick, r, NULL);
+    for (PetscInt j = 0; j < nd; ++j) rs[j] = r[j];
+    PetscCall(VecSetValues(c->Fc, nd, dofs, rs, ADD_VALUES));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* J += the friction tangent of every point with friction (before the assembly of J) */
+PetscErrorCode SPFrictionAddJacobian(SPContact c, Mat J)
+{
+  const PetscInt nt = c->dim - 1;
+
+  PetscFunctionBeginUser;
+  if (!c->friction) PetscFunctionReturn(PETSC_SUCCESS);
+  for (PetscInt i = 0; i < c->n; ++i) {
+    PetscInt    nd, dofs[SP_FRIC_MAXD];
+    PetscReal   A, p, k, y[2], t[2], N[SP_FRIC_MAXD], BT[2 * SP_FRIC_MAXD], K[SP_FRIC_MAXD * SP_FRIC_MAXD];
+    PetscScalar Ks[SP_FRIC_MAXD * SP_FRIC_MAXD];
+    PetscBool   stick;
+    SPContactPointTraction(c, i, &p, &k);
+    if (c->pt[i].geo.mu <= 0.0 || k <= 0.0) continue;
+    SPFrictionTraction(c, i, y, t, &stick);
+    PetscCall(SPFrictionElementDofs(c, i, &nd, dofs, N, BT, &A));
+    if (!nd) continue;
+    SPFrictionElement(nd, nt, A, c->pt[i].epsT, c->pt[i].geo.mu, p, k, BT, N, y, t, stick, NULL, K);
+    for (PetscInt j = 0; j < nd * nd; ++j) Ks[j] = K[j];
+    PetscCall(MatSetValues(J, nd, dofs, nd, dofs, Ks, ADD_VALUES));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Anchor point i at the evaluated state (its current closest point) with committed traction tg
+   (a dim-vector; NULL: none): the new basis, displacements, s_T = -t_T/eps_T, Dg_T = 0 */
+static void AnchorPoint(SPContact c, PetscInt i, const PetscReal tg[])
+{
+  SPContactPoint *pt = &c->pt[i];
+  SPPointState   *st = &pt->st;
+  const PetscInt  dim = c->dim, e = pt->geo.elem;
+
+  st->anchored = e != SP_ELEM_NONE ? PETSC_TRUE : PETSC_FALSE;
+  st->flips    = 0;
+  st->tT[0] = st->tT[1] = st->sT[0] = st->sT[1] = 0.0;
+  pt->geo.dgT[0] = pt->geo.dgT[1] = 0.0;
+  pt->geo.anchorLost = PETSC_FALSE;
+  if (!st->anchored) return;
+  st->anchor = e == SP_ELEM_OBSTACLE ? -(pt->geo.obstacle + 1) : c->mf[e].gid;
+  st->anchorXi[0] = pt->geo.xi[0], st->anchorXi[1] = pt->geo.xi[1];
+  for (PetscInt d = 0; d < 3; ++d) {
+    st->us[d] = d < dim ? pt->geo.x[d] - pt->X[d] : 0.0;
+    st->n[d]  = pt->geo.normal[d];
+    for (PetscInt a = 0; a < 2; ++a) st->T[a][d] = pt->geo.tangent[a][d];
+  }
+  (void)AnchorDisplacement(c, i, st->um); /* the current element's facet: always held */
+  if (tg)
+    for (PetscInt a = 0; a < dim - 1; ++a) {
+      st->tT[a] = SPDot(dim, tg, st->T[a]);
+      st->sT[a] = -st->tT[a] / pt->epsT;
+    }
+}
+
+/* Anchor the points that have no anchor yet (start of a solve), or, with `commit`, every point at a
+   converged step: accumulated slip and creep, committed traction and status, new anchor. */
+PetscErrorCode SPFrictionAnchor(SPContact c, PetscBool commit)
+{
+  const PetscInt dim = c->dim;
+
+  PetscFunctionBeginUser;
+  if (!c->friction) PetscFunctionReturn(PETSC_SUCCESS);
+  for (PetscInt i = 0; i < c->n; ++i) {
+    SPContactPoint *pt = &c->pt[i];
+    PetscReal       y[2], t[2], tg[3] = {0, 0, 0}, dg[3] = {0, 0, 0};
+    PetscBool       stick;
+    if (!commit) {
+      if (!pt->st.anchored) AnchorPoint(c, i, NULL);
+      continue;
+    }
+    SPFrictionTraction(c, i, y, t, &stick);
+    for (PetscInt a = 0; a < dim - 1; ++a)
+      for (PetscInt d = 0; d < dim; ++d) tg[d] += t[a] * pt->st.T[a][d], dg[d] += pt->geo.dgT[a] * pt->st.T[a][d];
+    for (PetscInt d = 0; d < dim; ++d) pt->st.slip[d] += dg[d];
+    if (pt->st.status == SP_POINT_STICK)
+      for (PetscInt d = 0; d < dim; ++d) pt->st.creep[d] += dg[d];
+    else
+      for (PetscInt d = 0; d < dim; ++d) pt->st.creep[d] = 0.0;
+    for (PetscInt d = 0; d < dim; ++d) pt->st.tCommit[d] = tg[d];
+    AnchorPoint(c, i, tg);
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The tangential shift update s_T <- -t_T/eps_T of the points active in the previous and the
+   current iterate (open points: s_T = 0), then the clip eps_T |s_T| <= mu lambda_N with
+   lambda_N = -eps s_N (after the normal update). *maxDs: max |Delta s_T| (collective max). */
+PetscErrorCode SPFrictionUpdate(SPContact c, PetscReal *maxDs)
+{
+  const PetscInt nt = c->dim - 1;
+  PetscReal      dmax = 0.0, rmax = 0.0, all[2], loc[2];
+
+  PetscFunctionBeginUser;
+  *maxDs = 0.0;
+  if (!c->friction) PetscFunctionReturn(PETSC_SUCCESS);
+  for (PetscInt i = 0; i < c->n; ++i) {
+    SPContactPoint *pt = &c->pt[i];
+    PetscReal       y[2], t[2], old[2] = {pt->st.sT[0], pt->st.sT[1]}, lam, ns, ds;
+    PetscBool       stick = PETSC_TRUE, activeNow = SPContactPointActive(c, i);
+    if (pt->geo.mu <= 0.0) continue;
+    if (activeNow && pt->st.active) {
+      SPFrictionTraction(c, i, y, t, &stick);
+      for (PetscInt a = 0; a < nt; ++a) pt->st.sT[a] = -t[a] / pt->epsT;
+    } else if (!activeNow) pt->st.sT[0] = pt->st.sT[1] = 0.0;
+    lam = -pt->eps * pt->st.sN;
+    ns  = SPNorm(nt, pt->st.sT);
+    if (pt->epsT * ns > pt->geo.mu * lam)
+      for (PetscInt a = 0; a < nt; ++a) pt->st.sT[a] *= lam > 0.0 ? pt->geo.mu * lam / (pt->epsT * ns) : 0.0;
+    for (PetscInt a = 0; a < nt; ++a) old[a] -= pt->st.sT[a];
+    ds   = SPNorm(nt, old);
+    dmax = PetscMax(dmax, ds);
+    if (!stick && lam > 0.0) rmax = PetscMax(rmax, pt->epsT * ds / (pt->geo.mu * lam));
+  }
+  loc[0] = dmax, loc[1] = rmax;
+  PetscCallMPI(MPI_Allreduce(loc, all, 2, MPIU_REAL, MPI_MAX, PetscObjectComm((PetscObject)c->dm)));
+  *maxDs                        = all[0];
+  c->stats.maxSlipShiftChange   = all[1];
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Status (open / stick / slip) of every point at the evaluated state, flips, and the friction
+   figures of the iterate: stick and slip counts, status changes (with `compare`), max stick creep
+   relative to h (for the convergence test) and absolute (committed creep plus this step's) */
+PetscErrorCode SPFrictionBookkeep(SPContact c, PetscBool compare)
+{
+  const PetscInt dim = c->dim;
+  PetscInt       n[3] = {0, 0, 0}, nall[3];
+  PetscReal      r[2] = {0, 0}, rall[2];
+
+  PetscFunctionBeginUser;
+  for (PetscInt i = 0; i < c->n; ++i) {
+    SPContactPoint *pt = &c->pt[i];
+    SPPointStatus   st;
+    PetscReal       y[2], t[2], dg[3] = {0, 0, 0};
+    PetscBool       stick;
+    if (!pt->st.active) st = SP_POINT_OPEN;
+    else if (pt->geo.mu <= 0.0) st = SP_POINT_STICK; /* closed, frictionless */
+    else {
+      SPFrictionTraction(c, i, y, t, &stick);
+      st = stick ? SP_POINT_STICK : SP_POINT_SLIP;
+    }
+    if (compare && st != pt->st.status) {
+      n[2]++;
+      if (st != SP_POINT_OPEN && pt->st.status != SP_POINT_OPEN) pt->st.flips++;
+    }
+    pt->st.status = st;
+    if (pt->geo.mu <= 0.0 || st == SP_POINT_OPEN) continue;
+    n[st == SP_POINT_STICK ? 0 : 1]++;
+    if (st != SP_POINT_STICK) continue;
+    for (PetscInt a = 0; a < dim - 1; ++a)
+      for (PetscInt d = 0; d < dim; ++d) dg[d] += pt->geo.dgT[a] * pt->st.T[a][d];
+    r[0] = PetscMax(r[0], SPNorm(dim, dg) / pt->h);
+    for (PetscInt d = 0; d < dim; ++d) dg[d] += pt->st.creep[d];
+    r[1] = PetscMax(r[1], SPNorm(dim, dg));
+  }
+  PetscCallMPI(MPI_Allreduce(n, nall, 3, MPIU_INT, MPI_SUM, PetscObjectComm((PetscObject)c->dm)));
+  PetscCallMPI(MPI_Allreduce(r, rall, 2, MPIU_REAL, MPI_MAX, PetscObjectComm((PetscObject)c->dm)));
+  c->stats.stickPoints   = nall[0];
+  c->stats.slipPoints    = nall[1];
+  c->stats.statusChanged = compare ? nall[2] : 0;
+  c->stats.maxStickCreep = rall[1];
+  c->creepRel            = rall[0];
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Friction part of the Newton convergence test: no status changed in the last iteration and, for
+   methods that update the shift at Newton boundaries, stuck points moved at most creep_rtol h in
+   the step and the slip points' shifts settled (after-solve updates check these in the loop) */
+PetscBool SPFrictionConverged(SPContact c)
+{
+  if (!c->friction) return PETSC_TRUE;
+  if (c->stats.statusChanged) return PETSC_FALSE;
+  if (c->method->timing != SP_UPDATE_NEWTON) return PETSC_TRUE; /* none, or checked after the solve */
+  return c->creepRel <= c->creepRtol && c->stats.maxSlipShiftChange <= c->slipRtol ? PETSC_TRUE : PETSC_FALSE;
+}
+
+/* Nodal friction forces: into f (the contact-point force vector, dim per point, global index
+   cp dim + d) at the slave and master vertices that are contact points, and the master parts
+   (or, for mirrored pairs, the slave parts) into fm, as SPContactRecoverForces does */
+PetscErrorCode SPFrictionForces(SPContact c, Vec f, PetscReal fm[])
+{
+  const PetscInt dim = c->dim, nt = dim - 1;
+
+  PetscFunctionBeginUser;
+  if (!c->friction) PetscFunctionReturn(PETSC_SUCCESS);
+  for (PetscInt i = 0; i < c->n; ++i) {
+    const SPContactPoint *pt = &c->pt[i];
+    const PetscInt        e  = pt->geo.elem;
+    PetscInt              nd, dofs[SP_FRIC_MAXD], idx[SP_FRIC_MAXD], nd0, fa = -1;
+    PetscReal             A, y[2], t[2], N[SP_FRIC_MAXD], BT[2 * SP_FRIC_MAXD], r[SP_FRIC_MAXD];
+    PetscScalar           fs[SP_FRIC_MAXD];
+    PetscBool             stick, mirror;
+    SPFrictionTraction(c, i, y, t, &stick);
+    if (t[0] == 0.0 && t[1] == 0.0) continue;
+    PetscCall(SPFrictionElementDofs(c, i, &nd, dofs, N, BT, &A));
+    if (!nd) continue;
+    SPFrictionElement(nd, nt, A, pt->epsT, pt->geo.mu, 0.0, 0.0, BT, N, y, t, stick, r, NULL);
+    nd0    = e >= 0 ? dim * (1 + c->mf[e].nv) : dim;
+    if (nd > nd0) fa = FindFacet(c, e, pt->st.anchor);
+    mirror = e >= 0 && c->pair[c->mf[e].pair].mirror ? PETSC_TRUE : PETSC_FALSE;
+    for (PetscInt j = 0; j < nd; ++j) {
+      const PetscInt a  = j / dim;
+      PetscInt       cp = c->rstart + i;
+      if (a > 0) cp = j < nd0 ? c->mf[e].cp[a - 1] : c->mf[fa].cp[(j - nd0) / dim];
+      idx[j] = cp >= 0 ? cp * dim + j % dim : -1;
+      fs[j]  = -r[j];
+      if (e >= 0 && (a > 0) != mirror) fm[j % dim] -= r[j];
+    }
+    PetscCall(VecSetValues(f, nd, idx, fs, ADD_VALUES));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
