@@ -20,10 +20,12 @@ SRC  := $(wildcard src/*.c src/materials/*.c src/methods/*.c)
 OBJ  := $(SRC:%.c=build/%.o)
 GEO  := $(wildcard input/*.geo)
 MSH  := $(GEO:input/%.geo=build/mesh/%.msh)
+# unit drivers: tests/unit/NAME.c -> bin/NAME (header-only kernels, the same flags as the code)
+UNIT := $(patsubst tests/unit/%.c,bin/%,$(wildcard tests/unit/*.c))
 
-.PHONY: all deps run check clean meshes petsc-found
+.PHONY: all deps run check clean meshes petsc-found unit
 all: deps
-	@$(MAKE) --no-print-directory bin/spcontact meshes
+	@$(MAKE) --no-print-directory bin/spcontact $(UNIT) meshes
 
 deps:
 	@bash scripts/setup-deps.sh
@@ -39,6 +41,15 @@ build/%.o: %.c | petsc-found
 	@mkdir -p $(dir $@)
 	$(CC) $(CPPFLAGS) $(CFLAGS) -c $< -o $@
 
+# `all` builds the unit drivers; `unit` names them (after `all`, so deps run first)
+unit: all
+$(UNIT): bin/%: build/unit/%.o | petsc-found
+	@mkdir -p bin
+	$(CC) -o $@ $< $(LDLIBS)
+build/unit/%.o: tests/unit/%.c | petsc-found
+	@mkdir -p $(dir $@)
+	$(CC) $(CPPFLAGS) $(CFLAGS) -c $< -o $@
+
 meshes: $(MSH)
 build/mesh/%.msh: input/%.geo
 	@mkdir -p build/mesh
@@ -49,10 +60,10 @@ build/mesh/%.msh: input/%.geo
 run: all
 	@source scripts/env.sh && bash scripts/run-default.sh
 
-check: all
+check: all unit
 	@bash tests/run.sh
 
 clean:
 	rm -rf build bin
 
--include $(OBJ:.o=.d)
+-include $(OBJ:.o=.d) $(UNIT:bin/%=build/unit/%.d)
