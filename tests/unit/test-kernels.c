@@ -6,7 +6,7 @@
                    SPElasticElementStiffness = df/du, f the element internal force built from
                    SPElasticStress (P1 triangle/tet, Q1 quad/hex at 2^dim Gauss points, random sets)
      obstacles     n = dg/dx and Hg = dn/dx of SPObstacleGap (plane, sphere, cylinder)
-     contact law   SPContactLawElement: r = dE/du along directions, E = A eps/2 min(0, g + s)^2, and
+     contact law   the law element (SPShiftedPenaltyTraction + SPContactElement): r = dE/du along directions, E = A eps/2 min(0, g + s)^2, and
                    K = dr/du, at penetrated, open and near-zero (g + s = +-100..1000 FD steps) states
      pair geometry SPPairGap (segment 2D, triangle and quad 3D): N = dg/du, H = dN/du at penetrated,
                    slid states, the projection recomputed by SPPairCandidate for every perturbed
@@ -30,6 +30,21 @@
 #include <kernels/elastic.h>
 #include <kernels/contact-law.h>
 #include <kernels/contact-pair.h>
+#include <kernels/contact-friction.h>
+
+/* The shifted-penalty law through the law interface: (p, k) from (g, s, eps), then the element */
+static PetscBool LawActive(PetscReal g, PetscReal s)
+{
+  PetscReal p, k;
+  SPShiftedPenaltyTraction(g, s, 1.0, &p, &k);
+  return k > 0.0 ? PETSC_TRUE : PETSC_FALSE;
+}
+static void LawElement(PetscInt nd, PetscReal A, PetscReal eps, PetscReal g, PetscReal s, const PetscReal N[], const PetscReal Hg[], PetscReal r[], PetscReal K[])
+{
+  PetscReal p, k;
+  SPShiftedPenaltyTraction(g, s, eps, &p, &k);
+  SPContactElement(nd, A, p, k, N, Hg, r, K);
+}
 
 #if PETSC_VERSION_LT(3, 19, 0)
   #define PETSC_SUCCESS 0 /* as in include/spcontact.h */
@@ -394,7 +409,7 @@ static PetscErrorCode CheckObstacle(Ctx *c, PetscInt dim, SPObstacleType type)
       eps = Rnd(c, 1.0, 100.0);
       PlaceAtGap(c, dim, &ob, load, t - s, x);
       SPObstacleGap(&ob, dim, load, x, &g, n, Hg);
-      active = SPContactLawActive(g, s);
+      active = LawActive(g, s);
       /* directions: the coordinate axes and two random unit vectors */
       for (PetscInt j = 0; j < nD; ++j) {
         for (PetscInt d = 0; d < dim; ++d) D[j][d] = (d == j);
@@ -405,13 +420,13 @@ static PetscErrorCode CheckObstacle(Ctx *c, PetscInt dim, SPObstacleType type)
           PetscReal xp[3], gp, np[3], Hp[9];
           for (PetscInt d = 0; d < dim; ++d) xp[d] = x[d] + sg * h * D[j][d];
           SPObstacleGap(&ob, dim, load, xp, &gp, np, Hp);
-          if (SPContactLawActive(gp, s) != active) skip = PETSC_TRUE;
+          if (LawActive(gp, s) != active) skip = PETSC_TRUE;
         }
       if (skip) {
         sr[cls].skipped++, sK[cls].skipped++;
         continue;
       }
-      SPContactLawElement(dim, A, eps, g, s, n, Hg, r, K);
+      LawElement(dim, A, eps, g, s, n, Hg, r, K);
       for (PetscInt j = 0; j < nD; ++j) {
         PetscReal E[2];
         for (PetscInt sg = 0; sg < 2; ++sg) {
@@ -430,7 +445,7 @@ static PetscErrorCode CheckObstacle(Ctx *c, PetscInt dim, SPObstacleType type)
           PetscReal xp[3], Hp[9];
           for (PetscInt d = 0; d < dim; ++d) xp[d] = x[d] + (d == j ? (sg ? -h : h) : 0.0);
           SPObstacleGap(&ob, dim, load, xp, &gpm[sg], npm[sg], Hp);
-          SPContactLawElement(dim, A, eps, gpm[sg], s, npm[sg], Hp, rpm[sg], NULL);
+          LawElement(dim, A, eps, gpm[sg], s, npm[sg], Hp, rpm[sg], NULL);
         }
         nfd[j] = (gpm[0] - gpm[1]) / (2.0 * h);
         for (PetscInt i = 0; i < dim; ++i) {
@@ -572,18 +587,18 @@ static PetscErrorCode CheckPair(Ctx *c, PetscInt dim, PetscInt nv)
     s   = Rnd(c, 0.0, 1.0) < 1.0 / 3.0 ? 0.0 : -Rnd(c, 0.0, 0.05) * L;
     A   = Rnd(c, 0.1, 2.0);
     eps = Rnd(c, 1.0, 100.0);
-    SPContactLawElement(nd, A, eps, g, s, N, H, r, K);
+    LawElement(nd, A, eps, g, s, N, H, r, K);
     for (PetscInt j = 0; j < nd && !skip; ++j) {
       PetscReal gpm[2], Npm[2][MAXD], rpm[2][MAXD], E[2];
       for (PetscInt sg = 0; sg < 2; ++sg) {
         PetscReal vp[MAXD], xp[2], m;
         for (PetscInt i = 0; i < nd; ++i) vp[i] = v[i];
         vp[j] += sg ? -h : h;
-        if (!PairEval(dim, nv, vp, xp, &gpm[sg], Npm[sg], NULL) || SPContactLawActive(gpm[sg], s) != SPContactLawActive(g, s)) {
+        if (!PairEval(dim, nv, vp, xp, &gpm[sg], Npm[sg], NULL) || LawActive(gpm[sg], s) != LawActive(g, s)) {
           skip = PETSC_TRUE;
           break;
         }
-        SPContactLawElement(nd, A, eps, gpm[sg], s, Npm[sg], NULL, rpm[sg], NULL);
+        LawElement(nd, A, eps, gpm[sg], s, Npm[sg], NULL, rpm[sg], NULL);
         m     = PetscMin(0.0, gpm[sg] + s);
         E[sg] = 0.5 * A * eps * m * m;
       }
@@ -608,6 +623,74 @@ static PetscErrorCode CheckPair(Ctx *c, PetscInt dim, PetscInt nv)
   PetscCall(Report(c, &sH));
   PetscCall(Report(c, &sr));
   PetscCall(Report(c, &sK));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* ---------------------------------------------------------------- friction */
+
+/* Friction residual of a random element at u: normal pressure p = law(g0 + N.u), trial
+   y = -epsT (BT u + c), return map, r = -A BT^T t (kernels/contact-friction.h) */
+typedef struct {
+  PetscInt  nd, nt;
+  PetscReal A, eps, epsT, mu, g0, s, N[MAXD], BT[2 * MAXD], c[2];
+} FricElem;
+
+static void FrictionResidual(const FricElem *e, const PetscReal u[], PetscReal r[], PetscReal K[], PetscBool *stick)
+{
+  PetscReal g = e->g0 + e->s, p, k, y[2], t[2];
+  for (PetscInt j = 0; j < e->nd; ++j) g += e->N[j] * u[j];
+  SPShiftedPenaltyTraction(g - e->s, e->s, e->eps, &p, &k);
+  for (PetscInt a = 0; a < e->nt; ++a) {
+    y[a] = e->c[a];
+    for (PetscInt j = 0; j < e->nd; ++j) y[a] += e->BT[a * e->nd + j] * u[j];
+    y[a] *= -e->epsT;
+  }
+  *stick = SPCoulombReturn(e->nt, y, e->mu * p, t);
+  SPFrictionElement(e->nd, e->nt, e->A, e->epsT, e->mu, p, k, e->BT, e->N, y, t, *stick, r, K);
+}
+
+/* K of SPFrictionElement against central differences of its residual, at penetrated states in
+   stick (|y| < 0.5 mu p) and slip (|y| > 2 mu p), away from the cone and the kink by many steps */
+static PetscErrorCode CheckFriction(Ctx *c, PetscInt dim, PetscInt nd)
+{
+  Stat st[2];
+
+  PetscFunctionBeginUser;
+  StatInit(&st[0], dim, nd == dim ? "friction_stick_tangent_obstacle" : "friction_stick_tangent_pair");
+  StatInit(&st[1], dim, nd == dim ? "friction_slip_tangent_obstacle" : "friction_slip_tangent_pair");
+  for (PetscInt cls = 0; cls < 2; ++cls)
+    for (PetscInt smp = 0; smp < c->samples; ++smp) {
+      FricElem  e;
+      PetscReal u[MAXD] = {0}, r0[MAXD], K[MAXD * MAXD], Kfd[MAXD * MAXD], rp[MAXD], rm[MAXD], y0 = 0.0, p0;
+      PetscBool stick, sp, sm, skip = PETSC_FALSE;
+      e.nd = nd, e.nt = dim - 1, e.A = Rnd(c, 0.5, 2.0), e.eps = Rnd(c, 10, 1000), e.epsT = Rnd(c, 10, 1000), e.mu = Rnd(c, 0.1, 0.8);
+      e.g0 = -Rnd(c, 1e-3, 1e-2), e.s = 0.0;
+      for (PetscInt j = 0; j < nd; ++j) e.N[j] = Rnd(c, -1, 1); /* u = 0: the state is set by g0 and c */
+      for (PetscInt j = 0; j < e.nt * nd; ++j) e.BT[j] = Rnd(c, -1, 1);
+      p0 = e.eps * (-e.g0);
+      for (PetscInt a = 0; a < e.nt; ++a) e.c[a] = Rnd(c, -1, 1);
+      y0 = e.epsT * SPNorm(e.nt, e.c);
+      for (PetscInt a = 0; a < e.nt; ++a) e.c[a] *= (cls == 0 ? 0.3 : 3.0) * e.mu * p0 / y0;
+      FrictionResidual(&e, u, r0, K, &stick);
+      if (stick != (cls == 0)) skip = PETSC_TRUE;
+      for (PetscInt j = 0; j < nd && !skip; ++j) {
+        const PetscReal h = c->step * 1e-3;
+        u[j] += h;
+        FrictionResidual(&e, u, rp, NULL, &sp);
+        u[j] -= 2 * h;
+        FrictionResidual(&e, u, rm, NULL, &sm);
+        u[j] += h;
+        if (sp != stick || sm != stick) skip = PETSC_TRUE;
+        for (PetscInt i = 0; i < nd; ++i) Kfd[i * nd + j] = (rp[i] - rm[i]) / (2 * h);
+      }
+      if (skip) {
+        st[cls].skipped++;
+        continue;
+      }
+      StatAdd(&st[cls], RelErr(nd * nd, K, Kfd, 1e-300));
+    }
+  PetscCall(Report(c, &st[0]));
+  PetscCall(Report(c, &st[1]));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -637,6 +720,10 @@ int main(int argc, char **argv)
   PetscCall(CheckPair(&c, 2, 2));
   PetscCall(CheckPair(&c, 3, 3));
   PetscCall(CheckPair(&c, 3, 4));
+  for (PetscInt dim = 2; dim <= 3; ++dim) {
+    PetscCall(CheckFriction(&c, dim, dim));           /* against an obstacle: slave dofs only */
+    PetscCall(CheckFriction(&c, dim, dim * (1 + dim))); /* a pair element (segment / triangle) */
+  }
   PetscCall(PetscPrintf(PETSC_COMM_WORLD, "test-kernels: %" PetscInt_FMT " checks, %" PetscInt_FMT " failed\n", c.nchecks, c.nfail));
   PetscCall(PetscRandomDestroy(&c.rnd));
   PetscCall(PetscFinalize());
