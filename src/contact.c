@@ -235,11 +235,12 @@ PetscErrorCode SPContactGetFields(SPContact c, Vec X, Vec pressure, Vec gap, Vec
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Every contact point on rank 0 as CSV: reference coordinates, area, eps, gap, shift, pressure */
+/* Every contact point on rank 0 as CSV: reference coordinates, area, eps, gap, shift, pressure,
+   active; tangential traction (vector), accumulated slip (vector), status (0 open, 1 stick, 2 slip) */
 PetscErrorCode SPContactWritePoints(SPContact c, Vec X, const char file[])
 {
   MPI_Comm     comm = PetscObjectComm((PetscObject)c->dm);
-  const PetscInt nc = 9;
+  const PetscInt nc = 16;
   PetscMPIInt  size, rank, mine = (PetscMPIInt)(c->n * nc), *counts = NULL, *displs = NULL;
   PetscReal   *row, *all = NULL;
 
@@ -259,6 +260,10 @@ PetscErrorCode SPContactWritePoints(SPContact c, Vec X, const char file[])
     r[6] = pt->st.sN;
     r[7] = pt->press;
     r[8] = pt->st.active;
+    for (PetscInt a = 0; a < c->dim - 1; ++a)
+      for (PetscInt d = 0; d < c->dim; ++d) r[9 + d] += pt->t[a] * pt->st.T[a][d];
+    for (PetscInt d = 0; d < c->dim; ++d) r[12 + d] = pt->st.slip[d];
+    r[15] = pt->st.status;
   }
   if (rank == 0) PetscCall(PetscMalloc2(size, &counts, size + 1, &displs));
   PetscCallMPI(MPI_Gather(&mine, 1, MPI_INT, counts, 1, MPI_INT, 0, comm));
@@ -271,10 +276,12 @@ PetscErrorCode SPContactWritePoints(SPContact c, Vec X, const char file[])
   if (rank == 0) {
     FILE *fp = fopen(file, "w");
     PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write %s", file);
-    fprintf(fp, "x,y,z,area,eps,gap,shift,pressure,active\n");
+    fprintf(fp, "x,y,z,area,eps,gap,shift,pressure,active,tx,ty,tz,slip_x,slip_y,slip_z,status\n");
     for (PetscInt i = 0; i < displs[size] / nc; ++i) {
       const PetscReal *r = &all[i * nc];
-      fprintf(fp, "%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%d\n", r[0], r[1], r[2], r[3], r[4], r[5], r[6], r[7], (int)r[8]);
+      fprintf(fp, "%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%d", r[0], r[1], r[2], r[3], r[4], r[5], r[6], r[7], (int)r[8]);
+      for (PetscInt k = 9; k < 15; ++k) fprintf(fp, ",%.17g", r[k]);
+      fprintf(fp, ",%d\n", (int)r[15]);
     }
     fclose(fp);
     PetscCall(PetscFree2(counts, displs));
