@@ -1,5 +1,6 @@
 /* Problem: displacement field (PetscFE, degree from -petscspace_degree), material, boundary
    conditions and the load factor that scales every load. */
+#include <ctype.h>
 #include <spcontact-impl.h>
 #include <kernels/elastic.h>
 
@@ -44,23 +45,48 @@ PetscErrorCode SPProblemCreate(DM dm, SPProblem *problem)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Region material k from -material_<k>_*: *given when any of them is set. The k = 0 family is
-   always queried (when unset nothing is recorded), so that -help lists it. */
-static PetscErrorCode RegionSetFromOptions(SPProblem p, PetscInt k, PetscBool *given, SPMaterial *m)
+/* Which k have an option -material_<k>_* in the database. PetscOptionsHasName cannot tell: its
+   "_%d_" lookup finds -material_E for -material_0_E. An index beyond the table is an error. */
+static PetscErrorCode RegionsGiven(MPI_Comm comm, PetscBool given[])
 {
-  MPI_Comm    comm    = PetscObjectComm((PetscObject)p->dm);
-  const char *names[] = {"label_value", "law", "E", "nu"};
-  char        prefix[32], opt[64], list[256];
-  PetscBool   set;
+  const char *key = "-material_";
+  const size_t n  = strlen(key);
+  char        *all;
 
   PetscFunctionBeginUser;
-  *given = PETSC_FALSE;
-  for (size_t i = 0; i < sizeof(names) / sizeof(names[0]); ++i) {
-    PetscCall(PetscSNPrintf(opt, sizeof(opt), "-material_%" PetscInt_FMT "_%s", k, names[i]));
-    PetscCall(PetscOptionsHasName(NULL, NULL, opt, &set));
-    if (set) *given = PETSC_TRUE;
+  for (PetscInt k = 0; k < SP_MAX_MATERIALS; ++k) given[k] = PETSC_FALSE;
+  PetscCall(PetscOptionsGetAll(NULL, &all)); /* "-name value -name ..." */
+  for (size_t i = 0; all[i]; ++i) {
+    size_t j = 0, d;
+    long   k = 0;
+    if (i > 0 && all[i - 1] != ' ') continue;
+    while (j < n && all[i + j] && tolower((unsigned char)all[i + j]) == key[j]) j++;
+    if (j < n) continue;
+    for (d = i + n; isdigit((unsigned char)all[d]) && k < 1000000; ++d) k = 10 * k + (all[d] - '0');
+    if (d == i + n || all[d] != '_') continue; /* not -material_<k>_ */
+    if (k >= SP_MAX_MATERIALS) {
+      char name[64];
+      for (j = 0; j < sizeof(name) - 1 && all[i + j] && all[i + j] != ' '; ++j) name[j] = all[i + j];
+      name[j] = 0;
+      PetscCall(PetscFree(all));
+      SETERRQ(comm, PETSC_ERR_USER_INPUT, "%s: at most %d region materials (k = 0..%d)", name, SP_MAX_MATERIALS, SP_MAX_MATERIALS - 1);
+    }
+    given[k] = PETSC_TRUE;
   }
-  if (!*given && k > 0) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(PetscFree(all));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Region material k from -material_<k>_* when given. The k = 0 family is always queried (when
+   not given nothing is recorded), so that -help lists it. */
+static PetscErrorCode RegionSetFromOptions(SPProblem p, PetscInt k, PetscBool given, SPMaterial *m)
+{
+  MPI_Comm  comm = PetscObjectComm((PetscObject)p->dm);
+  char      prefix[32], list[256];
+  PetscBool set;
+
+  PetscFunctionBeginUser;
+  if (!given && k > 0) PetscFunctionReturn(PETSC_SUCCESS);
   m->k     = k;
   m->value = -1;
   m->E     = p->E;
@@ -73,7 +99,7 @@ static PetscErrorCode RegionSetFromOptions(SPProblem p, PetscInt k, PetscBool *g
   PetscCall(PetscOptionsReal("-E", "Region material k: Young's modulus E > 0 (default: -material_E)", "SPProblemSetFromOptions", m->E, &m->E, NULL));
   PetscCall(PetscOptionsReal("-nu", "Region material k: Poisson's ratio, -1 < nu < 0.5 (default: -material_nu)", "SPProblemSetFromOptions", m->nu, &m->nu, NULL));
   PetscOptionsEnd();
-  if (!*given) PetscFunctionReturn(PETSC_SUCCESS);
+  if (!given) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCheck(set, comm, PETSC_ERR_USER_INPUT, "-material_%" PetscInt_FMT "_label_value: give the \"%s\" value of region material %" PetscInt_FMT " (other -material_%" PetscInt_FMT "_* options are set)", k, p->matLabel, k, k);
   PetscCheck(m->E > 0.0, comm, PETSC_ERR_USER_INPUT, "-material_%" PetscInt_FMT "_E %g: Young's modulus must be positive", k, (double)m->E);
   PetscCheck(m->nu > -1.0 && m->nu < 0.5, comm, PETSC_ERR_USER_INPUT, "-material_%" PetscInt_FMT "_nu %g: Poisson's ratio must satisfy -1 < nu < 0.5", k, (double)m->nu);
@@ -85,8 +111,8 @@ static PetscErrorCode RegionSetFromOptions(SPProblem p, PetscInt k, PetscBool *g
 PetscErrorCode SPProblemSetFromOptions(SPProblem p)
 {
   MPI_Comm  comm = PetscObjectComm((PetscObject)p->dm);
-  char      list[256], opt[64];
-  PetscBool extra;
+  char      list[256];
+  PetscBool given[SP_MAX_MATERIALS];
 
   PetscFunctionBeginUser;
   PetscOptionsBegin(comm, NULL, "Material options", "spcontact");
@@ -100,18 +126,15 @@ PetscErrorCode SPProblemSetFromOptions(SPProblem p)
   PetscCheck(p->nu > -1.0 && p->nu < 0.5, comm, PETSC_ERR_USER_INPUT, "-material_nu %g: Poisson's ratio must satisfy -1 < nu < 0.5", (double)p->nu);
   /* region materials -material_<k>_*, k = 0..7 (gaps allowed) */
   p->nmat = 0;
+  PetscCall(RegionsGiven(comm, given));
   for (PetscInt k = 0; k < SP_MAX_MATERIALS; ++k) {
-    PetscBool  given;
     SPMaterial m;
-    PetscCall(RegionSetFromOptions(p, k, &given, &m));
-    if (!given) continue;
+    PetscCall(RegionSetFromOptions(p, k, given[k], &m));
+    if (!given[k]) continue;
     for (PetscInt j = 0; j < p->nmat; ++j)
       PetscCheck(p->mat[j].value != m.value, comm, PETSC_ERR_USER_INPUT, "-material_%" PetscInt_FMT "_label_value %" PetscInt_FMT ": -material_%" PetscInt_FMT "_label_value has the same value; every cell needs exactly one material", k, m.value, p->mat[j].k);
     p->mat[p->nmat++] = m;
   }
-  PetscCall(PetscSNPrintf(opt, sizeof(opt), "-material_%d_label_value", SP_MAX_MATERIALS));
-  PetscCall(PetscOptionsHasName(NULL, NULL, opt, &extra));
-  PetscCheck(!extra, comm, PETSC_ERR_USER_INPUT, "%s: at most %d region materials (k = 0..%d)", opt, SP_MAX_MATERIALS, SP_MAX_MATERIALS - 1);
   p->regions = p->nmat > 0 ? PETSC_TRUE : PETSC_FALSE;
   if (!p->regions) { /* the default material on every cell */
     p->nmat         = 1;

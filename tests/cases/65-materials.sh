@@ -24,11 +24,13 @@ mat_hertz() {
 }
 mat_profile() { $PYTHON scripts/hertz_profile.py "$1" --E $MAT_ESTAR --nu 0 | tr '\n' ' '; echo; }
 
-# Region options that give every cell the default material: the same run, bit for bit (fast operator)
+# Region options that give every cell the default material: the same run as B6, bit for bit (fast
+# operator). Region 0 takes -material_E/_nu as defaults, region 1 sets them; -material_E/_nu are
+# given explicitly (PETSc's "_%d_" lookup would find them for -material_0_E, -material_0_nu).
 test_materials_single_region_identical() {
   local rc=0
   spc "$CASE_DIR/default.txt" 1 -options_file input/hertz2d_twobody.opts -output_dir "$CASE_DIR" -output_name default || return 1
-  spc "$CASE_DIR/regions.txt" 1 -options_file input/hertz2d_twobody.opts -material_0_label_value 10 -material_1_label_value 20 -material_1_E 1 -material_1_nu 0.3 -output_dir "$CASE_DIR" -output_name regions || return 1
+  spc "$CASE_DIR/regions.txt" 1 -options_file input/hertz2d_twobody.opts -material_E 1 -material_nu 0.3 -material_0_label_value 10 -material_1_label_value 20 -material_1_E 1 -material_1_nu 0.3 -output_dir "$CASE_DIR" -output_name regions || return 1
   assert_eq converged "$(sval "$CASE_DIR/regions.txt" converged)" yes || rc=1
   for k in newton_iterations linear_iterations contact_active_points; do
     assert_eq "$k" "$(sval "$CASE_DIR/regions.txt" $k)" "$(sval "$CASE_DIR/default.txt" $k)" || rc=1
@@ -162,6 +164,8 @@ options without label value|input/hertz2d_dissimilar.opts|-material_2_E 5
 unknown material label|input/hertz2d_dissimilar.opts|-material_label nosuch
 region materials with mms|input/hertz2d_dissimilar.opts|-material_mms 0.01
 material index 8|input/hertz2d_dissimilar.opts|-material_8_label_value 30
+material index 12, E only|input/hertz2d_dissimilar.opts|-material_12_E 3
+region E without label value, -material_E set|input/hertz2d_twobody.opts|-material_E 2 -material_1_E 3
 unknown default model|input/hertz2d_twobody.opts|-material_model nosuch
 CASES
   grep -q 'value(s) 20 .*-material_<k>_label_value' "$CASE_DIR/e1.txt" && echo "cell without material: names value 20 and -material_<k>_label_value ok" || { echo "cell without material: message does not name value 20 and the option FAILED"; rc=1; }
