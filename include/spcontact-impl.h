@@ -19,27 +19,56 @@ typedef struct {
   PetscReal load;     /* Dirichlet only: the load factor the bc function scales by (set on insert) */
 } SPBC;
 
-typedef PetscErrorCode (*SPMaterialSetUpFn)(PetscDS, PetscReal, PetscReal, PetscScalar[]);
+/* A material law (the table in problem.c). Its parameters come from a material's (E, nu); the
+   kernels read them from constants[] (one material everywhere) or, with region materials, from
+   the auxiliary cell field (one value per cell, components SP_A_*; kernels/elastic.h). */
+#define SP_MAX_MATERIALS 8 /* region materials per run (-material_0_.. -material_7_) */
+#define SP_LAW_NPARAM    2 /* parameters per cell of a law (linear_elastic: lambda, mu) */
 typedef struct {
-  const char       *name;
-  SPMaterialSetUpFn setup;
-  PetscBool         linear;    /* stress linear in the strain */
-  PetscBool         isotropic; /* isotropic linear elastic, Lame constants in SP_C_LAMBDA/SP_C_MU:
-                                  the fast element operator (fast-elastic.c) may replace PetscFE */
-} SPMaterialEntry;
-PETSC_EXTERN PetscErrorCode SPMaterialSetUp_LinearElastic(PetscDS, PetscReal, PetscReal, PetscScalar[]);
+  const char *name;
+  /* E, nu -> the law's per-cell parameters param[SP_LAW_NPARAM] */
+  void (*parameters)(PetscReal E, PetscReal nu, PetscReal param[]);
+  /* residual/Jacobian kernels on ds; param != NULL: one material, its parameters go into constants[];
+     param == NULL: per-cell parameters from the auxiliary field */
+  PetscErrorCode (*setup)(PetscDS ds, const PetscReal param[], PetscScalar constants[]);
+  PetscBool linear;       /* stress linear in the strain: stiffness reuse is exact */
+  PetscBool fastOperator; /* isotropic linear elasticity with param = (lambda, mu): the fast element
+                             operator (fast-elastic.c) implements it and may replace PetscFE */
+} SPMaterialLaw;
+PETSC_EXTERN void           SPMaterialParameters_LinearElastic(PetscReal, PetscReal, PetscReal[]);
+PETSC_EXTERN PetscErrorCode SPMaterialSetUp_LinearElastic(PetscDS, const PetscReal[], PetscScalar[]);
+
+/* One material: a law and its data, on the cells of one label value (region materials) or on
+   every cell (the default material, value -1) */
+typedef struct {
+  PetscInt             k;     /* option index of -material_<k>_* (0 for the default material) */
+  PetscInt             value; /* -material_<k>_label_value; -1: every cell */
+  char                 lawName[64];
+  const SPMaterialLaw *law;
+  PetscReal            E, nu;
+  PetscReal            param[SP_LAW_NPARAM];
+} SPMaterial;
 
 struct _n_SPProblem {
   DM        dm; /* not owned */
   PetscInt  dim, degree;
-  char      material[64];
+  char      material[64]; /* the default material: -material_model, -material_E, -material_nu */
   PetscReal E, nu;
+  char      matLabel[PETSC_MAX_PATH_LEN]; /* cell label of the region materials ("Cell Sets") */
+  PetscBool regions;                      /* region materials given (-material_<k>_*) */
+  PetscInt  nmat;                         /* materials: 1 (the default) or the region materials */
+  SPMaterial mat[SP_MAX_MATERIALS];
+  PetscInt   cStart, cEnd;
+  PetscInt  *cellMat;   /* per local cell: index into mat[] */
+  PetscReal *cellParam; /* per local cell: the law's parameters, SP_LAW_NPARAM each */
+  PetscInt   vStart, vEnd;
+  PetscReal *vertexE;   /* region materials: per local vertex, the largest E of the cells around it (all ranks) */
   PetscReal load;
   PetscInt  nbc;
   SPBC      bc[SP_MAX_BC];
   PetscReal mmsAmp; /* manufactured-solution amplitude; 0 = off */
-  PetscBool linear;    /* residual affine in u: stiffness reuse is exact */
-  PetscBool isotropic; /* isotropic linear elastic material (SPMaterialEntry.isotropic) */
+  PetscBool linear;       /* residual affine in u: stiffness reuse is exact */
+  PetscBool fastOperator; /* every cell's law has the fast element operator (SPMaterialLaw.fastOperator) */
   Vec       locBC;  /* local vector holding the Dirichlet values of load factor bcLoad */
   PetscReal bcLoad;
 };
@@ -252,6 +281,7 @@ struct _n_SPFastElastic {
   PetscReal       *dN;          /* reference gradients of the scalar basis, (q nb + a) dim + k */
   PetscInt        *gidx, *lidx; /* per cell: global (constrained < 0) and local closure indices */
   PetscReal       *xc;          /* per cell: node coordinates, closure order */
+  const PetscReal *lame;        /* per cell: lambda, mu (the problem's per-cell parameters, not owned) */
 };
 
 struct _n_SPSolver {

@@ -44,6 +44,7 @@ PETSC_EXTERN PetscErrorCode SPProblemSetUp(SPProblem);
 PETSC_EXTERN PetscErrorCode SPProblemSetLoadFactor(SPProblem, PetscReal);
 PETSC_EXTERN PetscErrorCode SPProblemGetLoadFactor(SPProblem, PetscReal *);
 PETSC_EXTERN PetscErrorCode SPProblemGetYoung(SPProblem, PetscReal *);
+PETSC_EXTERN PetscErrorCode SPProblemGetVertexYoung(SPProblem, PetscInt, PetscReal *);
 PETSC_EXTERN PetscErrorCode SPProblemGetDegree(SPProblem, PetscInt *);
 PETSC_EXTERN PetscErrorCode SPProblemGetLocalState(SPProblem, Vec, Vec *);
 PETSC_EXTERN PetscErrorCode SPProblemRestoreLocalState(SPProblem, Vec *);

@@ -152,7 +152,6 @@ PetscErrorCode SPContactComputeAreas(SPContact c)
   PetscReal          E;
 
   PetscFunctionBeginUser;
-  PetscCall(SPProblemGetYoung(c->problem, &E));
   PetscCall(DMCreateGlobalVector(c->dmC, &area));
   PetscCall(VecDuplicate(area, &meas));
   PetscCall(VecDuplicate(area, &count));
@@ -164,7 +163,12 @@ PetscErrorCode SPContactComputeAreas(SPContact c)
     const PetscReal h = PetscPowReal(PetscRealPart(pm[i] / pc[i]), 1.0 / (c->dim - 1));
     c->pt[i].area     = PetscRealPart(pa[i]);
     c->pt[i].h        = h;
-    c->pt[i].eps      = c->penalty > 0.0 ? c->penalty : c->alpha * E / h;
+    /* E of the material at the slave vertex: the largest E of the cells around it (one material:
+       its E). The stiffer side governs the stiffness entries of the vertex, so eps stays alpha
+       times the local stiffness scale, as with one material: not smaller (slow shift contraction,
+       penalty penetration), and no larger than with the stiffer material alone (conditioning). */
+    PetscCall(SPProblemGetVertexYoung(c->problem, c->pt[i].vertex, &E));
+    c->pt[i].eps = c->penalty > 0.0 ? c->penalty : c->alpha * E / h;
   }
   PetscCall(VecRestoreArrayRead(area, &pa));
   PetscCall(VecRestoreArrayRead(meas, &pm));

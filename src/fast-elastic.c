@@ -1,11 +1,12 @@
 /* Fast bulk operator: element-level isotropic linear elasticity on first-order cells (P1/Q1, any
    cell type, 2D and 3D through dim). Per cell K_e = sum_q w detJ B^T D B with the structure written
-   out (kernels/elastic.h), inserted with the closure indices that PETSc's own assembly uses, so the
+   out (kernels/elastic.h) and the cell's own Lame constants (the problem's per-cell material
+   parameters, so region materials are honoured), inserted with the closure indices that PETSc's own assembly uses, so the
    matrix is the generic PetscFE one to round-off: constrained (Dirichlet) dofs carry negative
    indices and MatSetValues drops them; the global system has no rows for them at all.
    The residual is r_e = K_e u_e (exact for a linear material) plus PETSc's boundary residual for the
-   Neumann conditions. Everything else (other degrees, manufactured solutions, non-isotropic or
-   nonlinear materials, mixed cell types) stays on the PetscFE path. */
+   Neumann conditions. Everything else (other degrees, manufactured solutions, laws without the
+   fast operator (SPMaterialLaw.fastOperator), mixed cell types) stays on the PetscFE path. */
 #include <spcontact-impl.h>
 #include <kernels/elastic.h>
 
@@ -151,11 +152,11 @@ static void CellGradients(SPFastElastic f, const PetscScalar xc[], PetscReal G[]
   }
 }
 
-/* K_e of local cell c (0-based) */
-static void CellStiffness(SPFastElastic f, PetscInt c, PetscReal lambda, PetscReal mu, PetscReal G[], PetscReal wdetJ[], PetscScalar K[])
+/* K_e of local cell c (0-based), with its own Lame constants */
+static void CellStiffness(SPFastElastic f, PetscInt c, PetscReal G[], PetscReal wdetJ[], PetscScalar K[])
 {
   CellGradients(f, &f->xc[c * f->nidx], G, wdetJ);
-  SPElasticElementStiffness(f->dim, f->nb, f->nq, G, wdetJ, lambda, mu, K);
+  SPElasticElementStiffness(f->dim, f->nb, f->nq, G, wdetJ, f->lame[c * SP_LAW_NPARAM + SP_A_LAMBDA], f->lame[c * SP_LAW_NPARAM + SP_A_MU], K);
 }
 
 /* The geometry above agrees with PETSc's on the first cells; otherwise the fast path does not apply */
@@ -188,13 +189,15 @@ PetscErrorCode SPFastElasticCreate(DM dm, SPProblem p, SPFastElastic *fast)
   *fast = NULL;
   PetscCall(DMGetDS(dm, &ds));
   PetscCall(PetscDSGetNumFields(ds, &nf));
-  ok = p->isotropic && p->degree == 1 && p->mmsAmp == 0.0 && nf == 1 ? PETSC_TRUE : PETSC_FALSE;
+  ok = p->fastOperator && p->degree == 1 && p->mmsAmp == 0.0 && nf == 1 ? PETSC_TRUE : PETSC_FALSE;
   PetscCallMPI(MPI_Allreduce(&ok, &okAll, 1, MPIU_BOOL, MPI_LAND, PetscObjectComm((PetscObject)dm)));
   if (!okAll) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(PetscNew(&f));
   f->dm = dm;
   PetscCall(DMGetDimension(dm, &f->dim));
   PetscCall(DMPlexGetHeightStratum(dm, 0, &f->cStart, &f->cEnd));
+  PetscCheck(f->cStart == p->cStart && f->cEnd == p->cEnd, PETSC_COMM_SELF, PETSC_ERR_PLIB, "fast operator and problem see different cells");
+  f->lame = p->cellParam; /* lambda, mu per cell (SP_A_LAMBDA, SP_A_MU) */
   PetscCall(PetscDSGetDiscretization(ds, 0, (PetscObject *)&fe));
   PetscCall(PetscFEGetQuadrature(fe, &f->quad));
   PetscCall(PetscQuadratureGetData(f->quad, NULL, NULL, &f->nq, NULL, &f->w));
@@ -233,32 +236,16 @@ static PetscErrorCode WorkRestore(Work *w)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode Lame(SPFastElastic f, PetscReal *lambda, PetscReal *mu)
-{
-  PetscDS            ds;
-  PetscInt           n;
-  const PetscScalar *c;
-
-  PetscFunctionBeginUser;
-  PetscCall(DMGetDS(f->dm, &ds));
-  PetscCall(PetscDSGetConstants(ds, &n, &c));
-  *lambda = PetscRealPart(c[SP_C_LAMBDA]);
-  *mu     = PetscRealPart(c[SP_C_MU]);
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 /* P += K (the bulk stiffness), then final assembly */
 PetscErrorCode SPFastElasticAddJacobian(SPFastElastic f, Mat P)
 {
-  Work      w;
-  PetscReal lambda, mu;
+  Work w;
 
   PetscFunctionBeginUser;
-  PetscCall(Lame(f, &lambda, &mu));
   PetscCall(WorkGet(f, &w));
   for (PetscInt c = f->cStart; c < f->cEnd; ++c) {
     const PetscInt *idx = &f->gidx[(c - f->cStart) * f->nidx];
-    CellStiffness(f, c - f->cStart, lambda, mu, w.G, w.wdetJ, w.K);
+    CellStiffness(f, c - f->cStart, w.G, w.wdetJ, w.K);
     PetscCall(MatSetValues(P, f->nidx, idx, f->nidx, idx, w.K, ADD_VALUES)); /* negative (constrained) indices are skipped */
   }
   PetscCall(WorkRestore(&w));
@@ -296,19 +283,17 @@ static PetscErrorCode AddBoundaryResidual(SPFastElastic f, Vec locX, Vec locF)
 PetscErrorCode SPFastElasticAddResidual(SPFastElastic f, Vec locX, Vec locF)
 {
   Work               w;
-  PetscReal          lambda, mu;
   const PetscScalar *x;
   PetscScalar       *y;
   const PetscInt     n = f->nidx;
 
   PetscFunctionBeginUser;
-  PetscCall(Lame(f, &lambda, &mu));
   PetscCall(WorkGet(f, &w));
   PetscCall(VecGetArrayRead(locX, &x));
   PetscCall(VecGetArray(locF, &y));
   for (PetscInt c = f->cStart; c < f->cEnd; ++c) {
     const PetscInt *idx = &f->lidx[(c - f->cStart) * n];
-    CellStiffness(f, c - f->cStart, lambda, mu, w.G, w.wdetJ, w.K);
+    CellStiffness(f, c - f->cStart, w.G, w.wdetJ, w.K);
     for (PetscInt k = 0; k < n; ++k) w.u[k] = x[idx[k]];
     for (PetscInt i = 0; i < n; ++i) {
       PetscScalar r = 0.0;

@@ -1,12 +1,32 @@
 /* Problem: displacement field (PetscFE, degree from -petscspace_degree), material, boundary
    conditions and the load factor that scales every load. */
+#include <ctype.h>
 #include <spcontact-impl.h>
 #include <kernels/elastic.h>
 
-static const SPMaterialEntry SPMaterials[] = {
-  /* name            setup                          linear      isotropic */
-  {"linear_elastic", SPMaterialSetUp_LinearElastic, PETSC_TRUE, PETSC_TRUE},
+/* The material laws. A law declares what the solver may assume: `linear` (stiffness reuse is
+   exact) and `fastOperator` (the fast element operator implements it; fast-elastic.c). */
+static const SPMaterialLaw SPMaterialLaws[] = {
+  /* name            parameters                          setup                          linear      fastOperator */
+  {"linear_elastic", SPMaterialParameters_LinearElastic, SPMaterialSetUp_LinearElastic, PETSC_TRUE, PETSC_TRUE},
 };
+#define SP_NLAWS ((PetscInt)(sizeof(SPMaterialLaws) / sizeof(SPMaterialLaws[0])))
+
+/* The law of a material; NULL if the name is unknown. `list` receives the known names. */
+static PetscErrorCode FindLaw(const char name[], const SPMaterialLaw **law, char list[], size_t len)
+{
+  PetscFunctionBeginUser;
+  *law    = NULL;
+  list[0] = 0;
+  for (PetscInt i = 0; i < SP_NLAWS; ++i) {
+    PetscBool match;
+    PetscCall(PetscStrcmp(name, SPMaterialLaws[i].name, &match));
+    if (match) *law = &SPMaterialLaws[i];
+    if (i) PetscCall(PetscStrlcat(list, ", ", len));
+    PetscCall(PetscStrlcat(list, SPMaterialLaws[i].name, len));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
 
 PetscErrorCode SPProblemCreate(DM dm, SPProblem *problem)
 {
@@ -19,55 +39,331 @@ PetscErrorCode SPProblemCreate(DM dm, SPProblem *problem)
   p->nu   = 0.3;
   p->load = 1.0;
   PetscCall(PetscStrcpy(p->material, "linear_elastic"));
+  PetscCall(PetscStrcpy(p->matLabel, "Cell Sets"));
   PetscCall(DMGetDimension(dm, &p->dim));
   *problem = p;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Which k have an option -material_<k>_* in the database. PetscOptionsHasName cannot tell: its
+   "_%d_" lookup finds -material_E for -material_0_E. An index beyond the table is an error. */
+static PetscErrorCode RegionsGiven(MPI_Comm comm, PetscBool given[])
+{
+  const char *key = "-material_";
+  const size_t n  = strlen(key);
+  char        *all;
+
+  PetscFunctionBeginUser;
+  for (PetscInt k = 0; k < SP_MAX_MATERIALS; ++k) given[k] = PETSC_FALSE;
+  PetscCall(PetscOptionsGetAll(NULL, &all)); /* "-name value -name ..." */
+  for (size_t i = 0; all[i]; ++i) {
+    size_t j = 0, d;
+    long   k = 0;
+    if (i > 0 && all[i - 1] != ' ') continue;
+    while (j < n && all[i + j] && tolower((unsigned char)all[i + j]) == key[j]) j++;
+    if (j < n) continue;
+    for (d = i + n; isdigit((unsigned char)all[d]) && k < 1000000; ++d) k = 10 * k + (all[d] - '0');
+    if (d == i + n || all[d] != '_') continue; /* not -material_<k>_ */
+    if (k >= SP_MAX_MATERIALS) {
+      char name[64];
+      for (j = 0; j < sizeof(name) - 1 && all[i + j] && all[i + j] != ' '; ++j) name[j] = all[i + j];
+      name[j] = 0;
+      PetscCall(PetscFree(all));
+      SETERRQ(comm, PETSC_ERR_USER_INPUT, "%s: at most %d region materials (k = 0..%d)", name, SP_MAX_MATERIALS, SP_MAX_MATERIALS - 1);
+    }
+    given[k] = PETSC_TRUE;
+  }
+  PetscCall(PetscFree(all));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Region material k from -material_<k>_* when given. The k = 0 family is always queried (when
+   not given nothing is recorded), so that -help lists it. */
+static PetscErrorCode RegionSetFromOptions(SPProblem p, PetscInt k, PetscBool given, SPMaterial *m)
+{
+  MPI_Comm  comm = PetscObjectComm((PetscObject)p->dm);
+  char      prefix[32], list[256];
+  PetscBool set;
+
+  PetscFunctionBeginUser;
+  if (!given && k > 0) PetscFunctionReturn(PETSC_SUCCESS);
+  m->k     = k;
+  m->value = -1;
+  m->E     = p->E;
+  m->nu    = p->nu;
+  PetscCall(PetscStrcpy(m->lawName, p->material));
+  PetscCall(PetscSNPrintf(prefix, sizeof(prefix), "material_%" PetscInt_FMT "_", k));
+  PetscOptionsBegin(comm, prefix, "Region materials -material_<k>_*, k = 0..7 (shown for k = 0; without any, -material_model/_E/_nu apply to every cell)", "spcontact");
+  PetscCall(PetscOptionsInt("-label_value", "Region material k = 0..7: the cells of this value of -material_label (a gmsh physical surface in 2D, volume in 3D); with region materials every cell needs exactly one", "SPProblemSetFromOptions", m->value, &m->value, &set));
+  PetscCall(PetscOptionsString("-law", "Region material k: material law, linear_elastic (default: -material_model)", "SPProblemSetFromOptions", m->lawName, m->lawName, sizeof(m->lawName), NULL));
+  PetscCall(PetscOptionsReal("-E", "Region material k: Young's modulus E > 0 (default: -material_E)", "SPProblemSetFromOptions", m->E, &m->E, NULL));
+  PetscCall(PetscOptionsReal("-nu", "Region material k: Poisson's ratio, -1 < nu < 0.5 (default: -material_nu)", "SPProblemSetFromOptions", m->nu, &m->nu, NULL));
+  PetscOptionsEnd();
+  if (!given) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCheck(set, comm, PETSC_ERR_USER_INPUT, "-material_%" PetscInt_FMT "_label_value: give the \"%s\" value of region material %" PetscInt_FMT " (other -material_%" PetscInt_FMT "_* options are set)", k, p->matLabel, k, k);
+  PetscCheck(m->E > 0.0, comm, PETSC_ERR_USER_INPUT, "-material_%" PetscInt_FMT "_E %g: Young's modulus must be positive", k, (double)m->E);
+  PetscCheck(m->nu > -1.0 && m->nu < 0.5, comm, PETSC_ERR_USER_INPUT, "-material_%" PetscInt_FMT "_nu %g: Poisson's ratio must satisfy -1 < nu < 0.5", k, (double)m->nu);
+  PetscCall(FindLaw(m->lawName, &m->law, list, sizeof(list)));
+  PetscCheck(m->law, comm, PETSC_ERR_USER_INPUT, "-material_%" PetscInt_FMT "_law %s: unknown material law (available: %s)", k, m->lawName, list);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode SPProblemSetFromOptions(SPProblem p)
 {
-  MPI_Comm comm = PetscObjectComm((PetscObject)p->dm);
+  MPI_Comm  comm = PetscObjectComm((PetscObject)p->dm);
+  char      list[256];
+  PetscBool given[SP_MAX_MATERIALS];
 
   PetscFunctionBeginUser;
   PetscOptionsBegin(comm, NULL, "Material options", "spcontact");
-  PetscCall(PetscOptionsString("-material_model", "Material model: linear_elastic", "SPProblemSetFromOptions", p->material, p->material, sizeof(p->material), NULL));
-  PetscCall(PetscOptionsReal("-material_E", "Young's modulus E > 0", "SPProblemSetFromOptions", p->E, &p->E, NULL));
-  PetscCall(PetscOptionsReal("-material_nu", "Poisson's ratio, -1 < nu < 0.5", "SPProblemSetFromOptions", p->nu, &p->nu, NULL));
+  PetscCall(PetscOptionsString("-material_model", "Material law of every cell (without -material_<k>_*; else the default of -material_<k>_law): linear_elastic", "SPProblemSetFromOptions", p->material, p->material, sizeof(p->material), NULL));
+  PetscCall(PetscOptionsReal("-material_E", "Young's modulus E > 0 (of every cell; with region materials the default of -material_<k>_E)", "SPProblemSetFromOptions", p->E, &p->E, NULL));
+  PetscCall(PetscOptionsReal("-material_nu", "Poisson's ratio, -1 < nu < 0.5 (of every cell; with region materials the default of -material_<k>_nu)", "SPProblemSetFromOptions", p->nu, &p->nu, NULL));
+  PetscCall(PetscOptionsString("-material_label", "Cell label whose values -material_<k>_label_value select the region materials (gmsh physical surfaces/volumes)", "SPProblemSetFromOptions", p->matLabel, p->matLabel, sizeof(p->matLabel), NULL));
   PetscCall(PetscOptionsReal("-material_mms", "Verification: amplitude of the manufactured body force/solution on the unit box (0 = off)", "SPProblemSetFromOptions", p->mmsAmp, &p->mmsAmp, NULL));
   PetscOptionsEnd();
   PetscCheck(p->E > 0.0, comm, PETSC_ERR_USER_INPUT, "-material_E %g: Young's modulus must be positive", (double)p->E);
   PetscCheck(p->nu > -1.0 && p->nu < 0.5, comm, PETSC_ERR_USER_INPUT, "-material_nu %g: Poisson's ratio must satisfy -1 < nu < 0.5", (double)p->nu);
+  /* region materials -material_<k>_*, k = 0..7 (gaps allowed) */
+  p->nmat = 0;
+  PetscCall(RegionsGiven(comm, given));
+  for (PetscInt k = 0; k < SP_MAX_MATERIALS; ++k) {
+    SPMaterial m;
+    PetscCall(RegionSetFromOptions(p, k, given[k], &m));
+    if (!given[k]) continue;
+    for (PetscInt j = 0; j < p->nmat; ++j)
+      PetscCheck(p->mat[j].value != m.value, comm, PETSC_ERR_USER_INPUT, "-material_%" PetscInt_FMT "_label_value %" PetscInt_FMT ": -material_%" PetscInt_FMT "_label_value has the same value; every cell needs exactly one material", k, m.value, p->mat[j].k);
+    p->mat[p->nmat++] = m;
+  }
+  p->regions = p->nmat > 0 ? PETSC_TRUE : PETSC_FALSE;
+  if (!p->regions) { /* the default material on every cell */
+    p->nmat         = 1;
+    p->mat[0].k     = 0;
+    p->mat[0].value = -1;
+    p->mat[0].E     = p->E;
+    p->mat[0].nu    = p->nu;
+    PetscCall(PetscStrcpy(p->mat[0].lawName, p->material));
+    PetscCall(FindLaw(p->material, &p->mat[0].law, list, sizeof(list)));
+    PetscCheck(p->mat[0].law, comm, PETSC_ERR_USER_INPUT, "-material_model %s: unknown material (available: %s)", p->material, list);
+  }
+  /* one set of kernels serves every cell, with per-cell parameters: the regions share one law */
+  for (PetscInt j = 1; j < p->nmat; ++j)
+    PetscCheck(p->mat[j].law == p->mat[0].law, comm, PETSC_ERR_USER_INPUT, "-material_%" PetscInt_FMT "_law %s differs from -material_%" PetscInt_FMT "_law %s: the region materials of a run must share one law", p->mat[j].k, p->mat[j].lawName, p->mat[0].k, p->mat[0].lawName);
+  PetscCheck(!(p->regions && p->mmsAmp != 0.0), comm, PETSC_ERR_USER_INPUT, "-material_mms: the manufactured solution needs one material (-material_E, -material_nu); drop the -material_<k>_* options");
+  for (PetscInt j = 0; j < p->nmat; ++j) p->mat[j].law->parameters(p->mat[j].E, p->mat[j].nu, p->mat[j].param);
   PetscCall(SPBCSetFromOptions(comm, p->dim, &p->nbc, p->bc));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode SetUpMaterial(SPProblem p, PetscDS ds, PetscScalar constants[])
+/* The union over ranks of local integer lists (sorted, without duplicates); free *V */
+static PetscErrorCode GatherValues(MPI_Comm comm, PetscInt n, const PetscInt v[], PetscInt *N, PetscInt **V)
 {
-  MPI_Comm comm = PetscObjectComm((PetscObject)p->dm);
-  size_t   n    = sizeof(SPMaterials) / sizeof(SPMaterials[0]);
+  PetscMPIInt size, nl = (PetscMPIInt)n, *counts, *displs, total = 0;
+  PetscInt    nall;
 
   PetscFunctionBeginUser;
-  for (size_t i = 0; i < n; ++i) {
-    PetscBool match;
-    PetscCall(PetscStrcmp(p->material, SPMaterials[i].name, &match));
-    if (match) {
-      PetscCall(SPMaterials[i].setup(ds, p->E, p->nu, constants));
-      p->linear    = SPMaterials[i].linear;
-      p->isotropic = SPMaterials[i].isotropic;
-      PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCallMPI(MPI_Comm_size(comm, &size));
+  PetscCall(PetscMalloc2(size, &counts, size, &displs));
+  PetscCallMPI(MPI_Allgather(&nl, 1, MPI_INT, counts, 1, MPI_INT, comm));
+  for (PetscMPIInt r = 0; r < size; ++r) {
+    displs[r] = total;
+    total += counts[r];
+  }
+  PetscCall(PetscMalloc1(total + 1, V));
+  PetscCallMPI(MPI_Allgatherv(v, nl, MPIU_INT, *V, counts, displs, MPIU_INT, comm));
+  nall = total;
+  PetscCall(PetscSortRemoveDupsInt(&nall, *V));
+  *N = nall;
+  PetscCall(PetscFree2(counts, displs));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* "10, 20, 30" (negative values skipped) */
+static PetscErrorCode FormatValues(PetscInt n, const PetscInt v[], char s[], size_t len)
+{
+  PetscFunctionBeginUser;
+  s[0] = 0;
+  for (PetscInt i = 0; i < n; ++i) {
+    char one[32];
+    if (v[i] < 0) continue;
+    PetscCall(PetscSNPrintf(one, sizeof(one), "%s%" PetscInt_FMT, s[0] ? ", " : "", v[i]));
+    PetscCall(PetscStrlcat(s, one, len));
+  }
+  if (!s[0]) PetscCall(PetscStrncpy(s, "none", len));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Region materials: each local cell gets the material of its label value. Every cell must get
+   exactly one, and every material must reach at least one cell (globally). */
+static PetscErrorCode AssignRegions(SPProblem p)
+{
+  MPI_Comm  comm = PetscObjectComm((PetscObject)p->dm);
+  DMLabel   label;
+  PetscInt  nc = p->cEnd - p->cStart, count[SP_MAX_MATERIALS] = {0}, countAll[SP_MAX_MATERIALS];
+  PetscInt  clash[2] = {-1, -1}, clashAll[2], has, hasAll, nv = 0, nu = 0, nAll, nuAll, *vals, *unc, *all, *uncAll, nmiss[2] = {0, 0}, nmissAll[2];
+  char      s[256];
+
+  PetscFunctionBeginUser;
+  PetscCall(DMGetLabel(p->dm, p->matLabel, &label));
+  has = label ? 1 : 0;
+  PetscCallMPI(MPI_Allreduce(&has, &hasAll, 1, MPIU_INT, MPI_MAX, comm));
+  PetscCheck(hasAll, comm, PETSC_ERR_USER_INPUT, "-material_label %s: the mesh has no label \"%s\"; region materials (-material_<k>_label_value) need one (gmsh physical surfaces/volumes become \"Cell Sets\")", p->matLabel, p->matLabel);
+  for (PetscInt c = 0; c < nc; ++c) p->cellMat[c] = -1;
+  for (PetscInt k = 0; k < p->nmat && label; ++k) {
+    IS              is;
+    const PetscInt *pts;
+    PetscInt        n;
+    PetscCall(DMLabelGetStratumIS(label, p->mat[k].value, &is));
+    if (!is) continue;
+    PetscCall(ISGetLocalSize(is, &n));
+    PetscCall(ISGetIndices(is, &pts));
+    for (PetscInt i = 0; i < n; ++i) {
+      const PetscInt c = pts[i] - p->cStart;
+      if (c < 0 || c >= nc) continue; /* not a cell */
+      if (p->cellMat[c] >= 0) clash[0] = p->cellMat[c], clash[1] = k;
+      p->cellMat[c] = k;
+      count[k]++;
+    }
+    PetscCall(ISRestoreIndices(is, &pts));
+    PetscCall(ISDestroy(&is));
+  }
+  PetscCallMPI(MPI_Allreduce(clash, clashAll, 2, MPIU_INT, MPI_MAX, comm));
+  PetscCheck(clashAll[0] < 0, comm, PETSC_ERR_USER_INPUT, "-material_%" PetscInt_FMT "_label_value %" PetscInt_FMT " and -material_%" PetscInt_FMT "_label_value %" PetscInt_FMT ": some cells carry both \"%s\" values; every cell needs exactly one material", p->mat[clashAll[0]].k, p->mat[clashAll[0]].value, p->mat[clashAll[1]].k, p->mat[clashAll[1]].value, p->matLabel);
+  /* the label values of all cells and of the cells without a material (-1: no value) */
+  PetscCall(PetscMalloc2(nc + 1, &vals, nc + 1, &unc));
+  for (PetscInt c = 0; c < nc; ++c) {
+    PetscInt v = -1;
+    if (label) PetscCall(DMLabelGetValue(label, p->cStart + c, &v));
+    vals[nv++] = v;
+    if (p->cellMat[c] < 0) {
+      unc[nu++] = v;
+      nmiss[v < 0 ? 1 : 0]++;
     }
   }
-  SETERRQ(comm, PETSC_ERR_USER_INPUT, "-material_model %s: unknown material (available: linear_elastic)", p->material);
+  PetscCall(PetscSortRemoveDupsInt(&nv, vals));
+  PetscCall(PetscSortRemoveDupsInt(&nu, unc));
+  PetscCall(GatherValues(comm, nv, vals, &nAll, &all));
+  PetscCall(GatherValues(comm, nu, unc, &nuAll, &uncAll));
+  PetscCall(PetscFree2(vals, unc));
+  PetscCallMPI(MPI_Allreduce(count, countAll, SP_MAX_MATERIALS, MPIU_INT, MPI_SUM, comm));
+  PetscCallMPI(MPI_Allreduce(nmiss, nmissAll, 2, MPIU_INT, MPI_SUM, comm));
+  PetscCall(FormatValues(nAll, all, s, sizeof(s)));
+  for (PetscInt k = 0; k < p->nmat; ++k)
+    PetscCheck(countAll[k] > 0, comm, PETSC_ERR_USER_INPUT, "-material_%" PetscInt_FMT "_label_value %" PetscInt_FMT ": no cell has \"%s\" value %" PetscInt_FMT " (the cells' values: %s)", p->mat[k].k, p->mat[k].value, p->matLabel, p->mat[k].value, s);
+  PetscCall(FormatValues(nuAll, uncAll, s, sizeof(s)));
+  PetscCall(PetscFree(all));
+  PetscCall(PetscFree(uncAll));
+  PetscCheck(nmissAll[0] == 0, comm, PETSC_ERR_USER_INPUT, "%" PetscInt_FMT " cell(s) have no material: \"%s\" value(s) %s match no -material_<k>_label_value; add a region material for each (-material_<k>_label_value V -material_<k>_E ... -material_<k>_nu ..., k = 0..7)", nmissAll[0], p->matLabel, s);
+  PetscCheck(nmissAll[1] == 0, comm, PETSC_ERR_USER_INPUT, "%" PetscInt_FMT " cell(s) have no material: they carry no \"%s\" value, so no -material_<k>_label_value reaches them; put every cell in a physical group of the mesh, or drop the -material_<k>_* options to use -material_E/-material_nu everywhere", nmissAll[1], p->matLabel);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Per local vertex, the largest E of the cells around it, over every rank (the point SF carries
+   the maximum to the owner and back to the ghost copies) */
+static PetscErrorCode VertexYoung(SPProblem p)
+{
+  PetscSF         sf;
+  PetscInt        pStart, pEnd, nroots, nleaves;
+  const PetscInt *ilocal;
+  PetscReal      *e, *leaf;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMPlexGetChart(p->dm, &pStart, &pEnd));
+  PetscCall(PetscCalloc2(pEnd, &e, pEnd, &leaf));
+  for (PetscInt c = p->cStart; c < p->cEnd; ++c) {
+    const PetscReal E   = p->mat[p->cellMat[c - p->cStart]].E;
+    PetscInt       *pts = NULL, n;
+    PetscCall(DMPlexGetTransitiveClosure(p->dm, c, PETSC_TRUE, &n, &pts));
+    for (PetscInt i = 0; i < n; ++i) {
+      const PetscInt v = pts[2 * i];
+      if (v >= p->vStart && v < p->vEnd) e[v] = PetscMax(e[v], E);
+    }
+    PetscCall(DMPlexRestoreTransitiveClosure(p->dm, c, PETSC_TRUE, &n, &pts));
+  }
+  PetscCall(DMGetPointSF(p->dm, &sf));
+  PetscCall(PetscSFGetGraph(sf, &nroots, &nleaves, &ilocal, NULL));
+  if (nroots >= 0) {
+    PetscCall(PetscArraycpy(leaf, e, pEnd));
+    PetscCall(PetscSFReduceBegin(sf, MPIU_REAL, leaf, e, MPI_MAX));
+    PetscCall(PetscSFReduceEnd(sf, MPIU_REAL, leaf, e, MPI_MAX));
+    PetscCall(PetscSFBcastBegin(sf, MPIU_REAL, e, leaf, MPI_REPLACE));
+    PetscCall(PetscSFBcastEnd(sf, MPIU_REAL, e, leaf, MPI_REPLACE));
+    for (PetscInt l = 0; l < nleaves; ++l) {
+      const PetscInt q = ilocal ? ilocal[l] : l;
+      e[q] = leaf[q];
+    }
+  }
+  PetscCall(PetscMalloc1(p->vEnd - p->vStart, &p->vertexE));
+  for (PetscInt v = p->vStart; v < p->vEnd; ++v) p->vertexE[v - p->vStart] = e[v];
+  PetscCall(PetscFree2(e, leaf));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Per local cell: material and law parameters; with region materials also the vertex moduli */
+static PetscErrorCode SetUpCells(SPProblem p)
+{
+  PetscInt nc;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMPlexGetHeightStratum(p->dm, 0, &p->cStart, &p->cEnd));
+  PetscCall(DMPlexGetDepthStratum(p->dm, 0, &p->vStart, &p->vEnd));
+  nc = p->cEnd - p->cStart;
+  PetscCall(PetscMalloc2(nc, &p->cellMat, nc * SP_LAW_NPARAM, &p->cellParam));
+  if (p->regions) PetscCall(AssignRegions(p));
+  else
+    for (PetscInt c = 0; c < nc; ++c) p->cellMat[c] = 0;
+  for (PetscInt c = 0; c < nc; ++c)
+    for (PetscInt i = 0; i < SP_LAW_NPARAM; ++i) p->cellParam[c * SP_LAW_NPARAM + i] = p->mat[p->cellMat[c]].param[i];
+  if (p->regions) PetscCall(VertexYoung(p));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Region materials for the PetscFE path: a cellwise-constant (P0) auxiliary field with the law's
+   parameters, on the quadrature of the displacement FE (PETSc evaluates both at the same points,
+   in the cell and on the Neumann faces) */
+static PetscErrorCode SetUpAuxiliary(SPProblem p, PetscFE fe, PetscBool simplex)
+{
+  MPI_Comm     comm = PetscObjectComm((PetscObject)p->dm);
+  DM           dmAux;
+  PetscFE      feAux;
+  PetscSection s;
+  Vec          aux;
+  PetscScalar *a;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMClone(p->dm, &dmAux));
+  PetscCall(PetscFECreateLagrange(comm, p->dim, SP_LAW_NPARAM, simplex, 0, PETSC_DETERMINE, &feAux));
+  PetscCall(PetscFECopyQuadrature(fe, feAux));
+  PetscCall(PetscObjectSetName((PetscObject)feAux, "material"));
+  PetscCall(DMSetField(dmAux, 0, NULL, (PetscObject)feAux));
+  PetscCall(PetscFEDestroy(&feAux));
+  PetscCall(DMCreateDS(dmAux));
+  PetscCall(DMCreateLocalVector(dmAux, &aux));
+  PetscCall(DMGetLocalSection(dmAux, &s));
+  PetscCall(VecGetArray(aux, &a));
+  for (PetscInt c = p->cStart; c < p->cEnd; ++c) {
+    PetscInt off, dof;
+    PetscCall(PetscSectionGetDof(s, c, &dof));
+    PetscCall(PetscSectionGetOffset(s, c, &off));
+    PetscCheck(dof == SP_LAW_NPARAM, PETSC_COMM_SELF, PETSC_ERR_PLIB, "material field: %" PetscInt_FMT " dofs on cell %" PetscInt_FMT, dof, c);
+    for (PetscInt i = 0; i < SP_LAW_NPARAM; ++i) a[off + i] = p->cellParam[(c - p->cStart) * SP_LAW_NPARAM + i];
+  }
+  PetscCall(VecRestoreArray(aux, &a));
+  PetscCall(DMSetAuxiliaryVec(p->dm, NULL, 0, 0, aux));
+  PetscCall(VecDestroy(&aux));
+  PetscCall(DMDestroy(&dmAux));
+  PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 PetscErrorCode SPProblemSetUp(SPProblem p)
 {
-  MPI_Comm    comm = PetscObjectComm((PetscObject)p->dm);
-  PetscFE     fe;
-  PetscSpace  sp;
-  PetscDS     ds;
-  PetscBool   simplex;
-  PetscScalar constants[SP_C_NUM] = {0};
+  MPI_Comm             comm = PetscObjectComm((PetscObject)p->dm);
+  PetscFE              fe;
+  PetscSpace           sp;
+  PetscDS              ds;
+  PetscBool            simplex;
+  PetscScalar          constants[SP_C_NUM] = {0};
+  const SPMaterialLaw *law                 = p->mat[0].law; /* every material's (checked) */
 
   PetscFunctionBeginUser;
   PetscCall(DMPlexIsSimplex(p->dm, &simplex));
@@ -82,10 +378,16 @@ PetscErrorCode SPProblemSetUp(SPProblem p)
   PetscCall(PetscSpaceGetDegree(sp, &p->degree, NULL)); /* (degree, max total degree) */
   PetscCheck(p->degree >= 1, comm, PETSC_ERR_USER_INPUT, "-petscspace_degree %" PetscInt_FMT ": displacement needs degree >= 1", p->degree);
   PetscCall(DMSetField(p->dm, 0, NULL, (PetscObject)fe));
-  PetscCall(PetscFEDestroy(&fe));
   PetscCall(DMCreateDS(p->dm));
   PetscCall(DMGetDS(p->dm, &ds));
-  PetscCall(SetUpMaterial(p, ds, constants));
+  PetscCall(SetUpCells(p));
+  /* one material: its parameters in constants[] (as before region materials existed); region
+     materials: per cell, from the auxiliary field */
+  PetscCall(law->setup(ds, p->regions ? NULL : p->mat[0].param, constants));
+  if (p->regions) PetscCall(SetUpAuxiliary(p, fe, simplex));
+  PetscCall(PetscFEDestroy(&fe));
+  p->linear       = law->linear;
+  p->fastOperator = law->fastOperator;
   constants[SP_C_LOAD] = p->load;
   constants[SP_C_MMS]  = p->mmsAmp;
   if (p->mmsAmp != 0.0) {
@@ -121,10 +423,26 @@ PetscErrorCode SPProblemGetLoadFactor(SPProblem p, PetscReal *load)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The largest Young's modulus of the run (with one material, its E) */
 PetscErrorCode SPProblemGetYoung(SPProblem p, PetscReal *E)
 {
   PetscFunctionBeginUser;
-  *E = p->E;
+  *E = p->mat[0].E;
+  for (PetscInt k = 1; k < p->nmat; ++k) *E = PetscMax(*E, p->mat[k].E);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The Young's modulus at a local mesh vertex: with one material its E; with region materials
+   the largest E of the cells around the vertex (on any rank). Contact uses it for the penalty
+   eps = alpha E / h at a slave vertex (contact-area.c). Valid after SPProblemSetUp. */
+PetscErrorCode SPProblemGetVertexYoung(SPProblem p, PetscInt vertex, PetscReal *E)
+{
+  PetscFunctionBeginUser;
+  if (!p->vertexE) *E = p->mat[0].E;
+  else {
+    PetscCheck(vertex >= p->vStart && vertex < p->vEnd, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "point %" PetscInt_FMT " is not a vertex [%" PetscInt_FMT ", %" PetscInt_FMT ")", vertex, p->vStart, p->vEnd);
+    *E = p->vertexE[vertex - p->vStart];
+  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -186,6 +504,8 @@ PetscErrorCode SPProblemDestroy(SPProblem *p)
 {
   PetscFunctionBeginUser;
   PetscCall(VecDestroy(&(*p)->locBC));
+  PetscCall(PetscFree2((*p)->cellMat, (*p)->cellParam));
+  PetscCall(PetscFree((*p)->vertexE));
   PetscCall(PetscFree(*p));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

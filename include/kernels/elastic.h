@@ -1,5 +1,6 @@
 /* Pointwise small-strain isotropic linear elasticity (plane strain in 2D), one path for 2D/3D.
-   Kernels read material and loads from constants[] through the SPConstant slots. */
+   Kernels read material and loads from constants[] through the SPConstant slots; with region
+   materials the Lame constants come per cell from the auxiliary field (SP_A_* components). */
 #ifndef SP_KERNELS_ELASTIC_H
 #define SP_KERNELS_ELASTIC_H
 #include <petscsys.h>
@@ -12,6 +13,13 @@ enum {
   SP_C_MMS,        /* amplitude of the manufactured solution (0: off) */
   SP_C_BC0,        /* Neumann slot k: [pressure, t_x, t_y, t_z] at SP_C_BC0 + 4k */
   SP_C_NUM = SP_C_BC0 + 4 * 8
+};
+
+/* Components of the auxiliary cell field (region materials): the law's per-cell parameters */
+enum {
+  SP_A_LAMBDA = 0, /* Lame lambda */
+  SP_A_MU,         /* shear modulus */
+  SP_A_NUM
 };
 
 #define SP_KERNEL_ARGS \
@@ -35,14 +43,29 @@ static inline void SPElasticF1(SP_KERNEL_ARGS, const PetscReal x[], PetscInt num
 
 /* d sigma_cd / d u_e,f = mu (d_ce d_df + d_cf d_de) + lambda d_cd d_ef, stored in PETSc's layout
    g3[((c * Nc + e) * dim + d) * dim + f] (test comp, trial comp, test deriv, trial deriv) */
-static inline void SPElasticG3(SP_KERNEL_ARGS, PetscReal u_tShift, const PetscReal x[], PetscInt numConstants, const PetscScalar constants[], PetscScalar g3[])
+static inline void SPElasticG3Lame(PetscInt dim, PetscReal lambda, PetscReal mu, PetscScalar g3[])
 {
-  const PetscReal lambda = PetscRealPart(constants[SP_C_LAMBDA]), mu = PetscRealPart(constants[SP_C_MU]);
   for (PetscInt c = 0; c < dim; ++c)
     for (PetscInt d = 0; d < dim; ++d)
       for (PetscInt e = 0; e < dim; ++e)
         for (PetscInt f = 0; f < dim; ++f)
           g3[((c * dim + e) * dim + d) * dim + f] = mu * ((c == e && d == f) + (c == f && d == e)) + lambda * (c == d && e == f);
+}
+
+static inline void SPElasticG3(SP_KERNEL_ARGS, PetscReal u_tShift, const PetscReal x[], PetscInt numConstants, const PetscScalar constants[], PetscScalar g3[])
+{
+  SPElasticG3Lame(dim, PetscRealPart(constants[SP_C_LAMBDA]), PetscRealPart(constants[SP_C_MU]), g3);
+}
+
+/* The same with per-cell Lame constants (region materials) from the auxiliary field */
+static inline void SPElasticF1Aux(SP_KERNEL_ARGS, const PetscReal x[], PetscInt numConstants, const PetscScalar constants[], PetscScalar f1[])
+{
+  SPElasticStress(dim, PetscRealPart(a[aOff[0] + SP_A_LAMBDA]), PetscRealPart(a[aOff[0] + SP_A_MU]), u_x, f1);
+}
+
+static inline void SPElasticG3Aux(SP_KERNEL_ARGS, PetscReal u_tShift, const PetscReal x[], PetscInt numConstants, const PetscScalar constants[], PetscScalar g3[])
+{
+  SPElasticG3Lame(dim, PetscRealPart(a[aOff[0] + SP_A_LAMBDA]), PetscRealPart(a[aOff[0] + SP_A_MU]), g3);
 }
 
 /* Element stiffness of the same law for one cell, with the structure of B^T D B written out:
