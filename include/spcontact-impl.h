@@ -314,6 +314,7 @@ struct _n_SPOutput {
   PetscInt    nsteps;
   PetscReal   times[1024];
   PetscBool   contactFields;
+  PetscBool   frictionFields; /* tangential_traction, slip, status (runs with friction) */
 };
 
 struct _n_SPApp {

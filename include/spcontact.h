@@ -88,6 +88,7 @@ PETSC_EXTERN PetscErrorCode SPContactReportStep(SPContact, Vec, PetscInt, PetscR
 PETSC_EXTERN PetscErrorCode SPContactSaveState(SPContact);
 PETSC_EXTERN PetscErrorCode SPContactRestoreState(SPContact);
 PETSC_EXTERN PetscErrorCode SPContactGetFields(SPContact, Vec, Vec, Vec, Vec, Vec);
+PETSC_EXTERN PetscErrorCode SPContactGetFrictionFields(SPContact, Vec, Vec, Vec, Vec);
 PETSC_EXTERN PetscErrorCode SPContactWritePoints(SPContact, Vec, const char[]);
 PETSC_EXTERN PetscErrorCode SPContactView(SPContact, PetscViewer);
 PETSC_EXTERN PetscErrorCode SPContactDestroy(SPContact *);

@@ -18,7 +18,13 @@ Checks, one output line each ("ok   ..." or "FAIL ..."):
   * every Geometry: XY has 2 columns, XYZ 3;
   * every node-centred Attribute has one value (row) per geometry point; Vector attributes have
     as many components as the geometry has coordinates;
-  * Time values of a temporal collection are strictly increasing.
+  * Time values of a temporal collection are strictly increasing;
+  * friction fields: when an HDF5 file of a temporal collection holds
+    /vertex_fields/{tangential_traction,slip,status}_Field_0 (spcontact runs with friction), each
+    dataset has one slab per step with one row per geometry point, shape (steps, points, dim) for
+    the vectors tangential_traction and slip and (steps, points) for status; every grid lists them
+    (Vector, Vector, Scalar) with grid k selecting slab k; status values are in {-1, 0, 1, 2}
+    (-1: not a contact point, 0 open, 1 stick, 2 slip).
 Exit status 0 when every check passes, 1 on any failure (including a missing or unparsable file).
 """
 import math
@@ -26,6 +32,7 @@ import os
 import sys
 import xml.etree.ElementTree as ET
 
+FRICTION = (("tangential_traction", "Vector"), ("slip", "Vector"), ("status", "Scalar"))
 CORNERS = {"Triangle": 3, "Quadrilateral": 4, "Tetrahedron": 4, "Hexahedron": 8,
            "Polyline": 2, "Wedge": 6, "Pyramid": 5}
 GEOM_COLS = {"XY": 2, "XYZ": 3}
@@ -145,12 +152,15 @@ class Checker:
         return self.dims(item)
 
     def grid(self, g, where):
-        nv = ncoord = None
+        """Check one uniform grid; return (points, coordinates, the geometry's HDF5 file name)."""
+        nv = ncoord = gfile = None
         geo = g.find("Geometry")
         if geo is not None:
             gt = geo.get("GeometryType", geo.get("Type", "XYZ"))
             d = geo.find("DataItem")
             shape = self.item(d, where + " Geometry") if d is not None else None
+            if d is not None and d.get("Format") == "HDF" and ":" in (d.text or ""):
+                gfile = d.text.strip().split(":", 1)[0]
             if shape is not None and len(shape) == 2:
                 nv, ncoord = shape
                 if gt in GEOM_COLS:
@@ -193,6 +203,51 @@ class Checker:
                 nc = dims[1] if len(dims) > 1 else 1
                 self.report(nc == ncoord, "%s Attribute %s: Vector with %d components, geometry has %d"
                             % (where, name, nc, ncoord))
+        return nv, ncoord, gfile
+
+    @staticmethod
+    def slab_source(a):
+        """(HDF5 path, start of the first axis) of a HyperSlab attribute, or (None, None)."""
+        d = a.find("DataItem")
+        kids = d.findall("DataItem") if d is not None else []
+        if len(kids) != 2:
+            return None, None
+        try:
+            start = int((kids[0].text or "").split()[0])
+        except (ValueError, IndexError):
+            start = None
+        text = (kids[1].text or "").strip()
+        return (text.split(":", 1)[1] if ":" in text else None), start
+
+    def friction(self, kids, info, where):
+        """The friction fields of a temporal collection, when its HDF5 file holds them."""
+        if not kids or info[0][2] is None:
+            return
+        nv, ncoord, gfile = info[0]
+        f = self.h5(gfile)
+        if f is None or nv is None or ncoord is None:
+            return
+        nsteps = len(kids)
+        for name, atype in FRICTION:
+            dpath = "/vertex_fields/%s_Field_0" % name
+            if dpath not in f:
+                continue
+            shape = list(f[dpath].shape)
+            expect = [nsteps, nv, ncoord] if atype == "Vector" else [nsteps, nv]
+            self.report(shape == expect, "%s: friction field %s:%s shape %s (expect %s: %d steps, %d points)"
+                        % (where, gfile, dpath, shape, expect, nsteps, nv))
+            for k, g in enumerate(kids):
+                a = [x for x in g.findall("Attribute") if x.get("Name") == name]
+                ok = len(a) == 1 and a[0].get("AttributeType") == atype and a[0].get("Center", "Node") == "Node"
+                src, start = self.slab_source(a[0]) if ok else (None, None)
+                ok = ok and src == dpath and start == k
+                self.report(ok, "%s grid %s: friction attribute %s listed once, %s, Node, slab %s of %s"
+                            % (where, g.get("Name"), name, atype, k, dpath))
+            if name == "status" and shape == expect:
+                import numpy as np
+                v = f[dpath][()]
+                ok = bool(np.all(np.isin(v, (-1.0, 0.0, 1.0, 2.0))))
+                self.report(ok, "%s: status values %s in {-1, 0, 1, 2}" % (where, sorted(set(np.unique(v).tolist()))[:8]))
 
     def run(self):
         try:
@@ -208,12 +263,14 @@ class Checker:
             if top.get("GridType") == "Collection":
                 kids = top.findall("Grid")
                 self.report(len(kids) > 0, "%s: collection %s has %d grids" % (self.xmf, top.get("Name"), len(kids)))
-                times = []
+                times, info = [], []
                 for k in kids:
                     t = k.find("Time")
                     if t is not None:
                         times.append(float(t.get("Value")))
-                    self.grid(k, "grid %s" % k.get("Name"))
+                    info.append(self.grid(k, "grid %s" % k.get("Name")))
+                if top.get("CollectionType") == "Temporal":
+                    self.friction(kids, info, "%s: collection %s" % (self.xmf, top.get("Name")))
                 if top.get("CollectionType") == "Temporal":
                     inc = len(times) == len(kids) and all(b > a for a, b in zip(times, times[1:]))
                     self.report(inc, "%s: %d time values strictly increasing: %s" % (self.xmf, len(times), times))

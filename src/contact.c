@@ -235,6 +235,53 @@ PetscErrorCode SPContactGetFields(SPContact c, Vec X, Vec pressure, Vec gap, Vec
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Friction vertex fields for output, at the state X: tangential traction sum_a t_a T_a and the
+   accumulated slip (vectors, on the vertex DM of `traction`, dim dofs), and the status (0 open,
+   1 stick, 2 slip) on the scalar vertex DM of `status`. Vertices that are not contact points get
+   zero traction and slip and status -1. */
+PetscErrorCode SPContactGetFrictionFields(SPContact c, Vec X, Vec traction, Vec slip, Vec status)
+{
+  DM           dmV, dmS;
+  PetscSection gsV, gsS;
+  PetscInt     rV, rS;
+  PetscScalar *t, *s, *st;
+
+  PetscFunctionBeginUser;
+  PetscCall(SPContactEvaluate(c, X));
+  PetscCall(SPContactRecoverForces(c));
+  PetscCall(VecGetDM(traction, &dmV));
+  PetscCall(VecGetDM(status, &dmS));
+  PetscCall(DMGetGlobalSection(dmV, &gsV));
+  PetscCall(DMGetGlobalSection(dmS, &gsS));
+  PetscCall(VecGetOwnershipRange(traction, &rV, NULL));
+  PetscCall(VecGetOwnershipRange(status, &rS, NULL));
+  PetscCall(VecZeroEntries(traction));
+  PetscCall(VecZeroEntries(slip));
+  PetscCall(VecSet(status, -1.0));
+  PetscCall(VecGetArray(traction, &t));
+  PetscCall(VecGetArray(slip, &s));
+  PetscCall(VecGetArray(status, &st));
+  for (PetscInt i = 0; i < c->n; ++i) {
+    const SPContactPoint *pt = &c->pt[i];
+    PetscInt              offV, offS;
+    PetscCall(PetscSectionGetOffset(gsV, pt->vertex, &offV));
+    PetscCall(PetscSectionGetOffset(gsS, pt->vertex, &offS));
+    offV -= rV;
+    offS -= rS;
+    for (PetscInt d = 0; d < c->dim; ++d) {
+      PetscReal v = 0.0;
+      for (PetscInt a = 0; a < c->dim - 1; ++a) v += pt->t[a] * pt->st.T[a][d];
+      t[offV + d] = v;
+      s[offV + d] = pt->st.slip[d];
+    }
+    st[offS] = (PetscReal)pt->st.status;
+  }
+  PetscCall(VecRestoreArray(traction, &t));
+  PetscCall(VecRestoreArray(slip, &s));
+  PetscCall(VecRestoreArray(status, &st));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* Every contact point on rank 0 as CSV: reference coordinates, area, eps, gap, shift, pressure,
    active; tangential traction (vector), accumulated slip (vector), status (0 open, 1 stick, 2 slip) */
 PetscErrorCode SPContactWritePoints(SPContact c, Vec X, const char file[])

@@ -65,6 +65,7 @@ static void Attribute(FILE *fp, const char h5[], const char name[], PetscInt nc,
 PetscErrorCode SPOutputWriteXdmf(SPOutput o)
 {
   static const char *const cfields[] = {"contact_pressure", "gap", "shift", "active"};
+  static const char *const ffields[] = {"tangential_traction", "slip", "status"}; /* with friction */
   MPI_Comm    comm = PetscObjectComm((PetscObject)o->dm);
   PetscMPIInt rank;
   PetscInt    nv = 0, nc = 0, corners = 0, dim;
@@ -91,6 +92,8 @@ PetscErrorCode SPOutputWriteXdmf(SPOutput o)
     Attribute(fp, h5, "displacement", dim, k, o->nsteps, nv);
     if (o->contactFields)
       for (PetscInt f = 0; f < 4; ++f) Attribute(fp, h5, cfields[f], 1, k, o->nsteps, nv);
+    if (o->frictionFields)
+      for (PetscInt f = 0; f < 3; ++f) Attribute(fp, h5, ffields[f], f < 2 ? dim : 1, k, o->nsteps, nv);
     fprintf(fp, "      </Grid>\n");
   }
   fprintf(fp, "    </Grid>\n  </Domain>\n</Xdmf>\n");

@@ -1,11 +1,14 @@
 /* Output: one HDF5 file per run (mesh once, then per load step the vertex fields displacement
-   and, with contact, contact_pressure, gap, shift, active), an XDMF file beside it for ParaView,
+   and, with contact, contact_pressure, gap, shift, active; with friction (any obstacle or pair
+   with mu > 0) also tangential_traction and slip (vectors) and status (0 open, 1 stick, 2 slip,
+   -1 on vertices that are not contact points)), an XDMF file beside it for ParaView,
    and the CSV Newton history. Files are written as *.part and renamed when the run ends, so an
    interrupted run never leaves a file that looks complete. */
 #include <spcontact-impl.h>
 #include <petscviewerhdf5.h>
 
 static const char *const ContactFields[] = {"contact_pressure", "gap", "shift", "active"};
+static const char *const FrictionFields[] = {"tangential_traction", "slip", "status"};
 
 PetscErrorCode SPOutputCreate(DM dm, SPOutput *out)
 {
@@ -172,6 +175,18 @@ PetscErrorCode SPOutputWriteStep(SPOutput o, SPProblem problem, Vec u, SPContact
     PetscCall(VecView(f[k], o->h5));
     PetscCall(DMRestoreGlobalVector(o->dmS, &f[k]));
   }
+  PetscCall(SPContactHasFriction(contact, &on));
+  if (!on) PetscFunctionReturn(PETSC_SUCCESS);
+  o->frictionFields = PETSC_TRUE;
+  PetscCall(DMGetGlobalVector(o->dmV, &f[0]));
+  PetscCall(DMGetGlobalVector(o->dmV, &f[1]));
+  PetscCall(DMGetGlobalVector(o->dmS, &f[2]));
+  for (PetscInt k = 0; k < 3; ++k) PetscCall(PetscObjectSetName((PetscObject)f[k], FrictionFields[k]));
+  PetscCall(SPContactGetFrictionFields(contact, u, f[0], f[1], f[2]));
+  for (PetscInt k = 0; k < 3; ++k) PetscCall(VecView(f[k], o->h5));
+  PetscCall(DMRestoreGlobalVector(o->dmV, &f[0]));
+  PetscCall(DMRestoreGlobalVector(o->dmV, &f[1]));
+  PetscCall(DMRestoreGlobalVector(o->dmS, &f[2]));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
