@@ -17,6 +17,9 @@ typedef struct {
   PetscReal value[3]; /* Dirichlet: displacement per component; traction: vector; pressure: value[0];
                          force: total force vector, applied as the uniform traction force/area */
   PetscReal load;     /* Dirichlet only: the load factor the bc function scales by (set on insert) */
+  PetscReal ramp[2];  /* load curve: amplitude 0 up to load factor ramp[0], 1 from ramp[1], linear between */
+  PetscInt  slot;     /* Neumann: constants[] slot; -1 for Dirichlet */
+  PetscReal base[4];  /* Neumann: [pressure, t_x, t_y, t_z] at amplitude 1 */
 } SPBC;
 
 /* A material law (the table in problem.c). Its parameters come from a material's (E, nu); the
@@ -76,6 +79,7 @@ struct _n_SPProblem {
 /* bc.c */
 PETSC_EXTERN PetscErrorCode SPBCSetFromOptions(MPI_Comm, PetscInt, PetscInt *, SPBC[]);
 PETSC_EXTERN PetscErrorCode SPBCAddToDS(DM, PetscInt, SPBC[], PetscScalar[]);
+PETSC_EXTERN void           SPBCSetLoad(PetscInt, const SPBC[], PetscReal, PetscScalar[]);
 
 /* Enforcement methods (src/methods/<name>.c, table in src/contact-methods.c). A method is a normal
    law (traction and its tangent) plus an update rule for the point's shift and the moment it runs:
@@ -154,6 +158,8 @@ typedef struct {
   PetscBool     active;        /* g + sN <= 0 at the last bookkeeping */
   PetscInt      inactiveCount; /* consecutive inactive iterates (shift reset after two) */
   PetscInt      flips;         /* stick/slip changes in this step (status frozen after 3) */
+  PetscReal     dir[2];        /* slip direction at the last bookkeeping (basis T) */
+  PetscBool     reversed;      /* the slip direction reversed at the last bookkeeping */
   /* friction anchor, committed at the last converged step (kept through a cut-back) */
   PetscBool     anchored;
   PetscInt      anchor;        /* master facet gid, or -(k + 1) for obstacle k */
@@ -172,6 +178,7 @@ typedef struct {
   SPPointGeometry geo;
   SPPointState    st;
   PetscReal       press, f[3];     /* recovered pressure and nodal contact force */
+  PetscReal       ft[3];           /* recovered tangential traction (vector) */
   PetscReal       epsT;            /* tangential penalty alpha_T E / h */
   PetscReal       t[2];            /* tangential traction of the last evaluated state (basis T) */
   PetscBool       stick;           /* its return-map status */
@@ -193,6 +200,7 @@ struct _n_SPContact {
   PetscReal       obMu[SP_MAX_OBSTACLES];          /* per obstacle (default mu) */
   PetscBool       friction;                        /* some obstacle or pair has mu > 0 */
   PetscReal       creepRel;                        /* max stick creep in the step / h, last bookkeeping */
+  PetscInt        maxFlips;                        /* stick/slip changes per step before a status is frozen */
   PetscBool       safeguard, settled;
   PetscBool       monitor;
   PetscInt        dim;
@@ -261,6 +269,7 @@ PETSC_EXTERN PetscErrorCode SPFrictionAnchor(SPContact, PetscBool);
 PETSC_EXTERN PetscErrorCode SPFrictionUpdate(SPContact, PetscReal *);
 PETSC_EXTERN PetscErrorCode SPFrictionBookkeep(SPContact, PetscBool);
 PETSC_EXTERN PetscBool      SPFrictionConverged(SPContact);
+PETSC_EXTERN PetscErrorCode SPFrictionSettled(SPContact, PetscBool *);
 PETSC_EXTERN PetscErrorCode SPFrictionForces(SPContact, Vec, PetscReal[]);
 /* contact-pairs.c */
 PETSC_EXTERN PetscErrorCode SPContactPairsSetFromOptions(SPContact);

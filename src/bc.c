@@ -8,7 +8,8 @@ const char *const SPBCTypes[] = {"dirichlet", "traction", "pressure", "force", "
 static PetscErrorCode BCSetFromOptions(MPI_Comm comm, PetscInt i, PetscInt dim, SPBC *bc)
 {
   char      prefix[32];
-  PetscInt  type = 0, nval = 3;
+  PetscInt  type = 0, nval = 3, nramp;
+  PetscBool rampSet;
   PetscBool set, valueSet;
 
   PetscFunctionBeginUser;
@@ -17,6 +18,7 @@ static PetscErrorCode BCSetFromOptions(MPI_Comm comm, PetscInt i, PetscInt dim, 
   bc->nvalues = SP_MAX_VALUES;
   bc->ncomps  = dim;
   for (PetscInt d = 0; d < 3; ++d) bc->comps[d] = d, bc->value[d] = 0.0;
+  bc->ramp[0] = 0.0, bc->ramp[1] = 1.0, bc->slot = -1;
   PetscOptionsBegin(comm, prefix, "Boundary condition", "spcontact");
   PetscCall(PetscOptionsEList("-type", "Boundary condition type: dirichlet, traction, pressure, force (total force spread uniformly over the faces)", "SPBCSetFromOptions", SPBCTypes, 4, SPBCTypes[0], &type, NULL));
   PetscCall(PetscOptionsString("-label", "Mesh label of the boundary", "SPBCSetFromOptions", bc->label, bc->label, sizeof(bc->label), NULL));
@@ -25,12 +27,15 @@ static PetscErrorCode BCSetFromOptions(MPI_Comm comm, PetscInt i, PetscInt dim, 
   PetscCall(PetscOptionsIntArray("-components", "Dirichlet: constrained displacement components (0..dim-1)", "SPBCSetFromOptions", bc->comps, &bc->ncomps, &set));
   if (!set) bc->ncomps = dim;
   PetscCall(PetscOptionsRealArray("-value", "Dirichlet: one displacement per component; traction: vector; pressure: value; force: total force vector (all at load factor 1)", "SPBCSetFromOptions", bc->value, &nval, &valueSet));
+  nramp = 2;
+  PetscCall(PetscOptionsRealArray("-ramp", "Load curve a,b: the condition is off up to load factor a, full from b, linear between (0,1: proportional to the load factor; e.g. a normal phase, then a tangential one)", "SPBCSetFromOptions", bc->ramp, &nramp, &rampSet));
   PetscOptionsEnd();
   bc->type = (SPBCType)type;
   {
     const PetscInt want = bc->type == SP_BC_DIRICHLET ? bc->ncomps : bc->type == SP_BC_PRESSURE ? 1 : dim;
     PetscCheck(!valueSet || nval == want, comm, PETSC_ERR_USER_INPUT, "-%svalue: %s needs %" PetscInt_FMT " value(s), got %" PetscInt_FMT, prefix, SPBCTypes[type], want, nval);
   }
+  PetscCheck(!rampSet || (nramp == 2 && bc->ramp[0] >= 0.0 && bc->ramp[1] > bc->ramp[0] && bc->ramp[1] <= 1.0), comm, PETSC_ERR_USER_INPUT, "-%sramp: give two load factors 0 <= a < b <= 1", prefix);
   PetscCheck(bc->nvalues > 0, comm, PETSC_ERR_USER_INPUT, "-%svalues: give the label values of boundary condition %" PetscInt_FMT, prefix, i);
   for (PetscInt k = 0; k < bc->ncomps; ++k)
     PetscCheck(bc->comps[k] >= 0 && bc->comps[k] < dim, comm, PETSC_ERR_USER_INPUT, "-%scomponents: component %" PetscInt_FMT " out of range [0, %" PetscInt_FMT ")", prefix, bc->comps[k], dim);
@@ -71,13 +76,31 @@ static PetscErrorCode LabelMeasure(DM dm, const SPBC *bc, PetscReal *measure)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* u_c = load * value_k on the constrained components; the load factor arrives as "time". */
+/* Amplitude of a condition at load factor `load`: its load curve (proportional by default) */
+static PetscReal Amplitude(const SPBC *bc, PetscReal load)
+{
+  if (bc->ramp[0] == 0.0 && bc->ramp[1] == 1.0) return load;
+  return PetscMin(1.0, PetscMax(0.0, (load - bc->ramp[0]) / (bc->ramp[1] - bc->ramp[0])));
+}
+
+/* u_c = amplitude * value_k on the constrained components; the load factor arrives as "time". */
 static PetscErrorCode DirichletValue(PetscInt dim, PetscReal load, const PetscReal x[], PetscInt Nc, PetscScalar *u, void *ctx)
 {
-  const SPBC *bc = (const SPBC *)ctx;
+  const SPBC     *bc = (const SPBC *)ctx;
+  const PetscReal a  = Amplitude(bc, load);
   for (PetscInt c = 0; c < Nc; ++c) u[c] = 0.0;
-  for (PetscInt k = 0; k < bc->ncomps; ++k) u[bc->comps[k]] = load * bc->value[k];
+  for (PetscInt k = 0; k < bc->ncomps; ++k) u[bc->comps[k]] = a * bc->value[k];
   return PETSC_SUCCESS;
+}
+
+/* The Neumann slots of constants[] at load factor `load` */
+void SPBCSetLoad(PetscInt nbc, const SPBC bc[], PetscReal load, PetscScalar constants[])
+{
+  for (PetscInt i = 0; i < nbc; ++i) {
+    const PetscReal a = Amplitude(&bc[i], load);
+    if (bc[i].slot < 0) continue;
+    for (PetscInt k = 0; k < 4; ++k) constants[SP_C_BC0 + 4 * bc[i].slot + k] = a * bc[i].base[k];
+  }
 }
 
 PetscErrorCode SPBCAddToDS(DM dm, PetscInt nbc, SPBC bc[], PetscScalar constants[])
@@ -110,8 +133,9 @@ PetscErrorCode SPBCAddToDS(DM dm, PetscInt nbc, SPBC bc[], PetscScalar constants
         PetscCall(LabelMeasure(dm, &bc[i], &scale));
         scale = 1.0 / scale;
       }
-      constants[SP_C_BC0 + 4 * slot] = bc[i].type == SP_BC_PRESSURE ? bc[i].value[0] : 0.0;
-      for (PetscInt d = 0; d < dim; ++d) constants[SP_C_BC0 + 4 * slot + 1 + d] = bc[i].type != SP_BC_PRESSURE ? scale * bc[i].value[d] : 0.0;
+      bc[i].slot    = slot;
+      bc[i].base[0] = bc[i].type == SP_BC_PRESSURE ? bc[i].value[0] : 0.0;
+      for (PetscInt d = 0; d < 3; ++d) bc[i].base[1 + d] = d < dim && bc[i].type != SP_BC_PRESSURE ? scale * bc[i].value[d] : 0.0;
       slot++;
     }
   }

@@ -105,7 +105,9 @@ PetscErrorCode SPContactAddJacobian(SPContact c, Vec X, Mat J)
 
 /* Nodal contact forces at the contact points (slave part of its own element plus the parts it
    receives as a master vertex, e.g. in the other pass of -contact_two_pass) and the recovered
-   pressure p_i = f_i . n_i / A_i. Against an obstacle or in one pass p_i is the law's pressure.
+   pressure p_i = f_i . n_i / A_i and tangential traction (f_i - (f_i . n_i) n_i) / A_i (with two
+   passes the split between the passes is not unique; the total is). Against an obstacle or in
+   one pass p_i is the law's pressure and the tangential traction the return map's.
    The master force is the reaction on the master bodies of the user's pairs: the master part of
    the user pairs' elements plus, with two passes, the slave part of the mirrored pairs' elements
    (whose slaves lie on those master bodies). Uses the last evaluated state; collective. */
@@ -149,6 +151,7 @@ PetscErrorCode SPContactRecoverForces(SPContact c)
     PetscReal       y[2];
     for (PetscInt d = 0; d < dim; ++d) pt->f[d] = PetscRealPart(f[i * dim + d]);
     pt->press = pt->area > 0.0 ? SPDot(dim, pt->f, pt->geo.normal) / pt->area : 0.0;
+    for (PetscInt d = 0; d < dim; ++d) pt->ft[d] = pt->area > 0.0 ? pt->f[d] / pt->area - pt->press * pt->geo.normal[d] : 0.0;
     SPFrictionTraction(c, i, y, pt->t, &pt->stick);
   }
   PetscCall(VecRestoreArrayRead(c->fvec, &f));

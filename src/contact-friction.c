@@ -17,6 +17,7 @@ PetscErrorCode SPFrictionSetFromOptions(PetscOptionItems *PetscOptionsObject, SP
   PetscCall(PetscOptionsReal("-contact_friction_mu", "Coulomb friction coefficient of every obstacle and pair (0: frictionless; per obstacle/pair: -contact_obstacle_<k>_mu, -contact_pair_<k>_mu)", "SPContactSetFromOptions", c->mu, &c->mu, NULL));
   PetscCall(PetscOptionsReal("-contact_friction_alpha", "Tangential penalty factor: eps_T = alpha_T E / h (default: -contact_alpha)", "SPContactSetFromOptions", c->alphaT, &c->alphaT, &setAlphaT));
   PetscCall(PetscOptionsReal("-contact_friction_creep_rtol", "Friction, methods that update the shift: converged only when no stuck point moves more than rtol x h in the step", "SPContactSetFromOptions", c->creepRtol, &c->creepRtol, NULL));
+  PetscCall(PetscOptionsInt("-contact_friction_max_flips", "Friction: stick/slip changes of a point in a load step after which its status is kept (friction.md safeguard)", "SPContactSetFromOptions", c->maxFlips, &c->maxFlips, NULL));
   PetscCall(PetscOptionsReal("-contact_friction_slip_rtol", "Friction, methods that update the shift: converged only when the tangential shift of slipping points changes by at most rtol x mu p / eps_T", "SPContactSetFromOptions", c->slipRtol, &c->slipRtol, NULL));
   if (!setAlphaT) c->alphaT = -1.0; /* resolved to alpha once -contact_alpha is known */
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -146,10 +147,10 @@ void SPFrictionTraction(SPContact c, PetscInt i, PetscReal y[], PetscReal t[], P
   if (pt->geo.mu <= 0.0 || k <= 0.0 || !pt->st.anchored || pt->geo.anchorLost) return;
   for (PetscInt a = 0; a < nt; ++a) y[a] = -pt->epsT * (pt->geo.dgT[a] + pt->st.sT[a]);
   *stick = SPCoulombReturn(nt, y, pt->geo.mu * p, t);
-  if (pt->st.flips > 3 && *stick != (pt->st.status == SP_POINT_STICK)) { /* frozen status */
+  if (pt->st.flips > c->maxFlips && *stick) { /* a chattering point slips for the rest of the step */
     const PetscReal ny = SPNorm(nt, y), r = pt->geo.mu * p;
-    *stick = pt->st.status == SP_POINT_STICK ? PETSC_TRUE : PETSC_FALSE;
-    for (PetscInt a = 0; a < nt; ++a) t[a] = *stick ? y[a] : (ny > 0.0 ? r * y[a] / ny : 0.0);
+    *stick = PETSC_FALSE;
+    for (PetscInt a = 0; a < nt; ++a) t[a] = ny > 0.0 ? r * y[a] / ny : 0.0;
   }
 }
 
@@ -193,7 +194,10 @@ PetscErrorCode SPFrictionAddJacobian(SPContact c, Mat J)
     SPFrictionTraction(c, i, y, t, &stick);
     PetscCall(SPFrictionElementDofs(c, i, &nd, dofs, N, BT, &A));
     if (!nd) continue;
-    SPFrictionElement(nd, nt, A, c->pt[i].epsT, c->pt[i].geo.mu, p, k, BT, N, y, t, stick, NULL, K);
+    /* A point whose slip just reversed gets the stick (elastic) tangent for one iteration: the
+       slip tangent has no tangential stiffness (none at all in 2D), so Newton would throw it back
+       across the cone again; its residual stays the slip traction */
+    SPFrictionElement(nd, nt, A, c->pt[i].epsT, c->pt[i].geo.mu, p, k, BT, N, y, t, stick || c->pt[i].st.reversed, NULL, K);
     for (PetscInt j = 0; j < nd * nd; ++j) Ks[j] = K[j];
     PetscCall(MatSetValues(J, nd, dofs, nd, dofs, Ks, ADD_VALUES));
   }
@@ -279,7 +283,12 @@ PetscErrorCode SPFrictionUpdate(SPContact c, PetscReal *maxDs)
       SPFrictionTraction(c, i, y, t, &stick);
       for (PetscInt a = 0; a < nt; ++a) pt->st.sT[a] = -t[a] / pt->epsT;
     } else if (!activeNow) pt->st.sT[0] = pt->st.sT[1] = 0.0;
-    lam = -pt->eps * pt->st.sN;
+    { /* the cone of the multiplier, or of the current pressure where that is larger (a stuck point
+         inside the current cone keeps its traction; an open point with a reset shift gets none) */
+      PetscReal p, k;
+      SPContactPointTraction(c, i, &p, &k);
+      lam = PetscMax(-pt->eps * pt->st.sN, p);
+    }
     ns  = SPNorm(nt, pt->st.sT);
     if (pt->epsT * ns > pt->geo.mu * lam)
       for (PetscInt a = 0; a < nt; ++a) pt->st.sT[a] *= lam > 0.0 ? pt->geo.mu * lam / (pt->epsT * ns) : 0.0;
@@ -292,6 +301,30 @@ PetscErrorCode SPFrictionUpdate(SPContact c, PetscReal *maxDs)
   PetscCallMPI(MPI_Allreduce(loc, all, 2, MPIU_REAL, MPI_MAX, PetscObjectComm((PetscObject)c->dm)));
   *maxDs                        = all[0];
   c->stats.maxSlipShiftChange   = all[1];
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Whether any point's friction status (stick / slip, slip direction) at the evaluated state
+   differs from its last bookkept one (collective). The tangential shift, like the normal one,
+   is updated only on a settled set: an update during a change overshoots. */
+PetscErrorCode SPFrictionSettled(SPContact c, PetscBool *settled)
+{
+  PetscInt n = 0, all;
+
+  PetscFunctionBeginUser;
+  *settled = PETSC_TRUE;
+  if (!c->friction) PetscFunctionReturn(PETSC_SUCCESS);
+  for (PetscInt i = 0; i < c->n && !n; ++i) {
+    const SPContactPoint *pt = &c->pt[i];
+    PetscReal             y[2], t[2];
+    PetscBool             stick;
+    if (pt->geo.mu <= 0.0 || !pt->st.active || pt->st.status == SP_POINT_OPEN) continue;
+    SPFrictionTraction(c, i, y, t, &stick);
+    if (stick != (pt->st.status == SP_POINT_STICK)) n = 1;
+    else if (!stick && SPDot(c->dim - 1, t, pt->st.dir) < 0.0) n = 1;
+  }
+  PetscCallMPI(MPI_Allreduce(&n, &all, 1, MPIU_INT, MPI_MAX, PetscObjectComm((PetscObject)c->dm)));
+  *settled = all ? PETSC_FALSE : PETSC_TRUE;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -319,6 +352,15 @@ PetscErrorCode SPFrictionBookkeep(SPContact c, PetscBool compare)
     if (compare && st != pt->st.status) {
       n[2]++;
       if (st != SP_POINT_OPEN && pt->st.status != SP_POINT_OPEN) pt->st.flips++;
+    }
+    pt->st.reversed = PETSC_FALSE;
+    if (st == SP_POINT_SLIP) { /* a reversal of the slip direction is a status change too */
+      const PetscReal nt_ = SPNorm(dim - 1, t);
+      PetscReal       m[2] = {0, 0};
+      for (PetscInt a = 0; a < dim - 1; ++a) m[a] = nt_ > 0.0 ? t[a] / nt_ : 0.0;
+      pt->st.reversed = compare && pt->st.status == SP_POINT_SLIP && SPDot(dim - 1, m, pt->st.dir) < 0.0 ? PETSC_TRUE : PETSC_FALSE;
+      if (pt->st.reversed) n[2]++;
+      pt->st.dir[0] = m[0], pt->st.dir[1] = m[1];
     }
     pt->st.status = st;
     if (pt->geo.mu <= 0.0 || st == SP_POINT_OPEN) continue;

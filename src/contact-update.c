@@ -129,13 +129,18 @@ PetscErrorCode SPContactNewtonUpdate(SPContact c, Vec W, PetscBool *changed)
   PetscFunctionBeginUser;
   PetscCall(SPContactEvaluate(c, W));
   PetscCall(ShiftUpdateApplies(c, &applies, &settled));
+
   if (applies)
     for (PetscInt i = 0; i < c->n; ++i) {
       const PetscReal old = c->pt[i].st.sN;
       c->pt[i].st.sN      = UpdatePoint(c, i);
       maxDs               = PetscMax(maxDs, PetscAbsReal(c->pt[i].st.sN - old));
     }
-  if (settled) PetscCall(SPFrictionUpdate(c, &dsT)); /* the tangential shift, after the normal one */
+  if (settled && c->method->timing == SP_UPDATE_NEWTON) { /* the tangential shift, after the normal one */
+    PetscBool fsettled;
+    PetscCall(SPFrictionSettled(c, &fsettled));
+    if (fsettled || !c->settled) PetscCall(SPFrictionUpdate(c, &dsT));
+  }
   PetscCall(Bookkeep(c, maxDs, PETSC_TRUE));
   c->setSettled = c->stats.activeChanged == 0 ? PETSC_TRUE : PETSC_FALSE;
   PetscCallMPI(MPI_Allreduce(&maxDs, &all, 1, MPIU_REAL, MPI_MAX, PetscObjectComm((PetscObject)c->dm)));

@@ -20,6 +20,7 @@ PetscErrorCode SPContactCreate(DM dm, SPProblem problem, PetscLogEvent search, S
   c->gapTol  = 1e-10;
   c->creepRtol = 1e-10;
   c->slipRtol  = 1e-8;
+  c->maxFlips  = 3;
   c->stepCap = 1.0;
   c->safeguard = PETSC_TRUE;
   c->settled   = PETSC_TRUE;
@@ -269,9 +270,7 @@ PetscErrorCode SPContactGetFrictionFields(SPContact c, Vec X, Vec traction, Vec 
     offV -= rV;
     offS -= rS;
     for (PetscInt d = 0; d < c->dim; ++d) {
-      PetscReal v = 0.0;
-      for (PetscInt a = 0; a < c->dim - 1; ++a) v += pt->t[a] * pt->st.T[a][d];
-      t[offV + d] = v;
+      t[offV + d] = pt->ft[d];
       s[offV + d] = pt->st.slip[d];
     }
     st[offS] = (PetscReal)pt->st.status;
@@ -307,8 +306,7 @@ PetscErrorCode SPContactWritePoints(SPContact c, Vec X, const char file[])
     r[6] = pt->st.sN;
     r[7] = pt->press;
     r[8] = pt->st.active;
-    for (PetscInt a = 0; a < c->dim - 1; ++a)
-      for (PetscInt d = 0; d < c->dim; ++d) r[9 + d] += pt->t[a] * pt->st.T[a][d];
+    for (PetscInt d = 0; d < c->dim; ++d) r[9 + d] = pt->ft[d];
     for (PetscInt d = 0; d < c->dim; ++d) r[12 + d] = pt->st.slip[d];
     r[15] = pt->st.status;
   }

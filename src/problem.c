@@ -395,6 +395,7 @@ PetscErrorCode SPProblemSetUp(SPProblem p)
     PetscCall(PetscDSSetExactSolution(ds, 0, SPMMSExact, &p->mmsAmp));
   }
   PetscCall(SPBCAddToDS(p->dm, p->nbc, p->bc, constants));
+  SPBCSetLoad(p->nbc, p->bc, p->load, constants);
   PetscCall(PetscDSSetConstants(ds, SP_C_NUM, constants));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -412,6 +413,7 @@ PetscErrorCode SPProblemSetLoadFactor(SPProblem p, PetscReal load)
   PetscCall(PetscDSGetConstants(ds, &n, &c));
   for (PetscInt i = 0; i < n; ++i) constants[i] = c[i];
   constants[SP_C_LOAD] = load;
+  SPBCSetLoad(p->nbc, p->bc, load, constants);
   PetscCall(PetscDSSetConstants(ds, n, constants));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

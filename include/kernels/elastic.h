@@ -9,7 +9,7 @@
 enum {
   SP_C_LAMBDA = 0, /* Lame lambda */
   SP_C_MU,         /* shear modulus */
-  SP_C_LOAD,       /* load factor: scales Neumann loads */
+  SP_C_LOAD,       /* load factor (the Neumann slots hold loads already scaled by it) */
   SP_C_MMS,        /* amplitude of the manufactured solution (0: off) */
   SP_C_BC0,        /* Neumann slot k: [pressure, t_x, t_y, t_z] at SP_C_BC0 + 4k */
   SP_C_NUM = SP_C_BC0 + 4 * 8
@@ -126,13 +126,13 @@ static inline void SPElasticF0MMS(SP_KERNEL_ARGS, const PetscReal x[], PetscInt 
   }
 }
 
-/* Neumann load on slot k: traction t and pressure p (compressive, along -n), scaled by the load
-   factor.  Residual term -int v.t_total with t_total = t - p n, so f0 = load (p n - t). */
+/* Neumann load on slot k: traction t and pressure p (compressive, along -n), already scaled by
+   the condition's load curve (SPBCSetLoad). Residual term -int v.t_total with t_total = t - p n,
+   so f0 = p n - t. */
 static inline void SPNeumann(PetscInt k, PetscInt dim, const PetscReal n[], const PetscScalar constants[], PetscScalar f0[])
 {
-  const PetscScalar *c    = &constants[SP_C_BC0 + 4 * k];
-  const PetscReal    load = PetscRealPart(constants[SP_C_LOAD]);
-  for (PetscInt d = 0; d < dim; ++d) f0[d] = load * (c[0] * n[d] - c[1 + d]);
+  const PetscScalar *c = &constants[SP_C_BC0 + 4 * k];
+  for (PetscInt d = 0; d < dim; ++d) f0[d] = c[0] * n[d] - c[1 + d];
 }
 
 #define SP_NEUMANN_KERNEL(k) \
