@@ -1,0 +1,123 @@
+# Coulomb friction with the tangential shift (friction.md): F1a stick without creep, F1b full slip,
+# F4 frictional patch test on non-matching pairs, 1 and 2 ranks, mu = 0 against frictionless runs,
+# the assembled tangent against finite differences in stick and slip, bad input.
+
+# friction_run NAME NP OPTS... : run, assert convergence, print the friction figures
+friction_run() {
+  local name=$1 np=$2; shift 2
+  local out=$CASE_DIR/$name.txt
+  spc "$out" "$np" "$@" -output_dir "$CASE_DIR" -output_name "$name" || return 1
+  echo "$name: newton $(sval "$out" newton_iterations) cutbacks $(sval "$out" cutbacks) stick $(sval "$out" contact_stick_points) slip $(sval "$out" contact_slip_points) creep $(sval "$out" contact_max_stick_creep) T_x $(sval "$out" contact_tangential_force_x) N $(sval "$out" contact_force_y)"
+  assert_eq "converged_$name" "$(sval "$out" converged)" yes
+}
+
+# F1a: every point sticks; T = tau x 1, N = q x 1; top u = (0.0015, -0.005) exactly for shifted
+# and alm; penalty creeps tau/eps_T = 0.0015/400 = 3.75e-6 (h = 1/40, alpha_T = 10), shifted and
+# alm <= 1e-10 h = 2.5e-12
+f1a_case() { # f1a_case METHOD NP
+  local m=$1 np=$2 out=$CASE_DIR/$1_np$2.txt rc=0
+  friction_run "$1_np$2" "$np" -options_file input/friction_block2d.opts -contact_method "$m" || return 1
+  assert_close tangential_force "$(sval "$out" contact_tangential_force_x)" -0.0015 1e-8 || rc=1
+  assert_close normal_force "$(sval "$out" contact_force_y)" 0.01 1e-8 || rc=1
+  assert_close stick_points "$(sval "$out" contact_stick_points)" 41 0 0 || rc=1
+  if [ "$m" = penalty ]; then
+    assert_close penalty_creep "$(sval "$out" contact_max_stick_creep)" 3.75e-6 1e-6 || rc=1
+  else
+    assert_le stick_creep "$(sval "$out" contact_max_stick_creep)" 2.5e-12 || rc=1
+    assert_close top_displacement "$(sval "$out" displacement_max)" 0.005 1e-8 || rc=1
+  fi
+  return $rc
+}
+test_friction_f1a_penalty() { f1a_case penalty 1; }
+test_friction_f1a_shifted() { f1a_case shifted 1 && f1a_case shifted 2; }
+test_friction_f1a_alm()     { f1a_case alm 1; }
+
+# The seed's friction claim on F1a: shifted removes the creep with at most 3 Newton iterations
+# more than penalty friction per load step (6 steps), and needs no more than alm
+test_friction_claim_f1a() {
+  local rc=0 n
+  for m in penalty shifted alm; do friction_run "$m" 1 -options_file input/friction_block2d.opts -contact_method $m || return 1; done
+  local np ns na; np=$(sval "$CASE_DIR/penalty.txt" newton_iterations); ns=$(sval "$CASE_DIR/shifted.txt" newton_iterations); na=$(sval "$CASE_DIR/alm.txt" newton_iterations)
+  assert_le shifted_minus_penalty_per_step "$(awk -v a="$ns" -v b="$np" 'BEGIN{print (a-b)/6}')" 3 || rc=1
+  assert_le shifted_vs_alm "$ns" "$na" || rc=1
+  return $rc
+}
+
+# F1b: full slip, T = mu N = 0.003 to 1e-8 (penalty: its fixed point is exact in 2D too)
+test_friction_f1b_penalty() {
+  local out=$CASE_DIR/slide.txt rc=0
+  friction_run slide 1 -options_file input/friction_slide2d.opts -contact_method penalty || return 1
+  assert_close tangential_force "$(sval "$out" contact_tangential_force_x)" -0.003 1e-8 || rc=1
+  assert_close slip_points "$(sval "$out" contact_stick_points)" 0 0 0 || rc=1
+  return $rc
+}
+# Proportional loading (pressure and drive together): shifted converges without cut-backs
+test_friction_f1b_proportional_shifted() {
+  local out=$CASE_DIR/slide.txt rc=0
+  friction_run slide 2 -options_file input/friction_slide2d.opts -contact_method shifted -load_steps 10 -bc_0_ramp 0,1 -bc_1_ramp 0,1 || return 1
+  assert_close tangential_force "$(sval "$out" contact_tangential_force_x)" -0.003 1e-8 || rc=1
+  assert_le max_penetration "$(sval "$out" contact_max_penetration)" 1e-10 || rc=1
+  return $rc
+}
+
+# F4: frictional patch test on the non-matching B5 pair, two-pass: contact pressure q and
+# tangential traction tau at every point to 1e-6, no slip, forces balanced, top u_y = -0.01
+test_friction_f4_patch() {
+  local rc=0
+  for m in shifted penalty; do
+    local out=$CASE_DIR/$m.txt
+    friction_run "$m" 1 -options_file input/friction_patch_4_5.opts -contact_method $m || return 1
+    local dev; dev=$(awk -F, 'NR>1{ d = ($8 - 0.01) / 0.01; if (d < 0) d = -d; if (d > p) p = d; t = $10 < 0 ? -$10 : $10; e = (t - 0.0015) / 0.0015; if (e < 0) e = -e; if (e > q) q = e } END { printf "%.3e %.3e\n", p, q }' "$CASE_DIR/${m}_contact.csv")
+    echo "$m: pressure deviation ${dev% *} tangential traction deviation ${dev#* }"
+    assert_close "force_x_$m" "$(sval "$out" contact_force_x)" -0.0015 1e-8 || rc=1
+    assert_close "master_balance_$m" "$(sval "$out" contact_force_master_x)" 0.0015 1e-8 || rc=1
+    if [ "$m" = shifted ]; then
+      assert_le pressure_deviation "${dev% *}" 1e-6 || rc=1
+      assert_le traction_deviation "${dev#* }" 1e-6 || rc=1
+      assert_le stick_creep "$(sval "$out" contact_max_stick_creep)" 2e-11 || rc=1 # 1e-10 h, h = 0.2
+      assert_close top_u "$(sval "$out" displacement_max)" 0.01 1e-6 || rc=1
+    fi
+  done
+  return $rc
+}
+
+# mu = 0 takes the frictionless path: the same figures as a run without the option
+test_friction_mu_zero_identical() {
+  local rc=0
+  spc "$CASE_DIR/a.txt" 1 -options_file input/hertz2d.opts -output_dir "$CASE_DIR" -output_name a || return 1
+  spc "$CASE_DIR/b.txt" 1 -options_file input/hertz2d.opts -contact_friction_mu 0 -output_dir "$CASE_DIR" -output_name b || return 1
+  same_summary "$CASE_DIR/a.txt" "$CASE_DIR/b.txt" 0 newton_iterations linear_iterations displacement_max contact_force_y contact_peak_pressure contact_max_penetration contact_radius || rc=1
+  assert_eq friction_off "$(sval "$CASE_DIR/b.txt" contact_friction)" no || rc=1
+  return $rc
+}
+
+# The assembled tangent (contact and friction) against finite differences, stick (F1a), slip
+# (F1b proportional) and a frictional pair (F4) on coarse meshes, direct solver. The Jacobian at
+# the first iterate of a load step is left out: there every point sits on a kink of the law (at
+# u = 0 it touches at g = 0 exactly; later, the committed traction puts a slipping point exactly
+# on the cone |y| = mu p), and a finite difference across a kink says nothing about the tangent.
+test_friction_jacobian() {
+  local rc=0
+  for c in "stick:-options_file input/friction_block2d.opts -dm_plex_box_faces 8,4 -load_steps 2 -contact_method shifted" "slip:-options_file input/friction_slide2d.opts -dm_plex_box_faces 8,4 -load_steps 2 -bc_0_ramp 0,1 -bc_1_ramp 0,1 -contact_method penalty" "pair:-options_file input/friction_patch_4_5.opts -load_steps 2 -contact_method shifted"; do
+    local name=${c%%:*} out=$CASE_DIR/${c%%:*}.txt
+    spc "$out" 1 ${c#*:} -snes_test_jacobian -contact_monitor -ksp_type preonly -pc_type lu -snes_max_it 4 -load_max_cutbacks 0 -output_dir "$CASE_DIR" -output_name "$name"
+    awk '/^  contact +[0-9]+ /{ it = $2 } /\|\|J - Jfd\|\|_F\/\|\|J\|\|_F = / && it > 0 { sub(/.*\|\|J\|\|_F = /, ""); sub(/,.*/, ""); print }' "$out" > "$CASE_DIR/$name.ratios"
+    echo "$name: $(wc -l < "$CASE_DIR/$name.ratios") Jacobian tests, max ratio $(sort -g "$CASE_DIR/$name.ratios" | tail -1)"
+    [ -s "$CASE_DIR/$name.ratios" ] || { echo "no Jacobian test ($name)"; rc=1; continue; }
+    assert_le "jacobian_ratio_$name" "$(sort -g "$CASE_DIR/$name.ratios" | tail -1)" 1e-6 || rc=1
+  done
+  return $rc
+}
+
+test_friction_bad_input() {
+  bad_input_cases <<'CASES'
+negative mu|input/friction_block2d.opts|-contact_friction_mu -0.1
+NaN mu|input/friction_block2d.opts|-contact_friction_mu nan
+negative obstacle mu|input/block2d.opts|-contact_obstacle_0_mu -1
+negative pair mu|input/patch_4_5.opts|-contact_pair_0_mu -1
+method without a tangential update|input/friction_block2d.opts|-contact_method shifted_regression
+friction without contact|input/elastic2d.opts|-contact_friction_mu 0.3
+bad tangential penalty factor|input/friction_block2d.opts|-contact_friction_alpha 0
+bad load curve|input/friction_block2d.opts|-bc_0_ramp 0.5,0.2
+CASES
+}
