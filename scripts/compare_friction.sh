@@ -1,0 +1,52 @@
+#!/usr/bin/env bash
+# The seed's friction claim, measured: penalty friction, the shifted penalty (tangential shift) and
+# the augmented Lagrangian at alpha = alpha_T = 10, 100, 1000 on a friction benchmark.
+# Usage: scripts/compare_friction.sh [friction_block2d|friction_patch_4_5|friction_slide2d] [NP] [PETSc options]
+# Prints one table (also <outdir>/compare.csv): Newton and linear iterations, cut-backs, max stick
+# creep (absolute and in element sizes h), tangential force error against the exact T, wall time;
+# and a PNG of max stick creep against Newton iteration per method (alpha 100, all curves drawn).
+cd "$(dirname "$0")/.." || exit 1
+source scripts/env.sh
+problem=${1:-friction_block2d}; np=${2:-1}; shift 2 2>/dev/null
+out=build/compare/$problem; mkdir -p "$out"
+declare -A T=([friction_block2d]=-0.0015 [friction_patch_4_5]=-0.0015 [friction_slide2d]=-0.003)
+declare -A H=([friction_block2d]=0.025 [friction_patch_4_5]=0.2 [friction_slide2d]=0.025)
+echo "method,alpha,newton_iterations,linear_iterations,cutbacks,max_stick_creep,creep_over_h,tangential_force_error,wall_time,converged" > "$out/compare.csv"
+for m in penalty shifted alm; do
+  for a in 10 100 1000; do
+    name=${m}_a$a
+    $MPIEXEC -n "$np" bin/spcontact -options_file input/$problem.opts -contact_method $m -contact_alpha $a \
+      -output_dir "$out" -output_name "$name" -output_fields false "$@" > "$out/$name.txt" 2>&1
+    v() { awk -v k="$1" '/^=== spcontact summary/{on=1} on && $1==k {print $2}' "$out/$name.txt" | tail -1; }
+    key=contact_tangential_force_x; [ "$problem" = friction_patch_4_5 ] && key=contact_force_x
+    terr=$(awk -v t="$(v $key)" -v r="${T[$problem]}" 'BEGIN{ if (t == "") print "-"; else printf "%.1e", (t-r)/(r<0?-r:r)}')
+    creep=$(v contact_max_stick_creep)
+    ch=$(awk -v c="$creep" -v h="${H[$problem]}" 'BEGIN{ if (c == "") print "-"; else printf "%.1e", c/h}')
+    echo "$m,$a,$(v newton_iterations),$(v linear_iterations),$(v cutbacks),$creep,$ch,$terr,$(v wall_time),$(v converged)" >> "$out/compare.csv"
+  done
+done
+column -s, -t "$out/compare.csv"
+$PYTHON - "$out" <<'PY'
+import csv, sys, os
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+out = sys.argv[1]
+fig, axs = plt.subplots(1, 3, figsize=(13, 4.2), sharey=True)
+for ax, a in zip(axs, (10, 100, 1000)):
+    for m, style in [("penalty", "k-"), ("shifted", "b-o"), ("alm", "r--^")]:
+        f = os.path.join(out, f"{m}_a{a}.csv")
+        if not os.path.exists(f):
+            continue
+        rows = list(csv.DictReader(open(f)))
+        creep = [max(float(r["max_stick_creep"]), 1e-17) for r in rows]
+        ax.semilogy(range(len(creep)), creep, style, label=m, ms=3, alpha=0.85)
+    ax.set_title(f"alpha = alpha_T = {a}")
+    ax.set_xlabel("Newton iteration (cumulative over load steps)")
+    ax.grid(True, which="both", alpha=0.3)
+axs[0].set_ylabel("max stick creep (accumulated + this step)")
+axs[0].legend()
+fig.tight_layout()
+fig.savefig(os.path.join(out, "creep.png"), dpi=110)
+print("plot:", os.path.join(out, "creep.png"))
+PY
