@@ -17,7 +17,7 @@ PetscErrorCode SPFrictionSetFromOptions(PetscOptionItems *PetscOptionsObject, SP
   PetscCall(PetscOptionsReal("-contact_friction_mu", "Coulomb friction coefficient of every obstacle and pair (0: frictionless; per obstacle/pair: -contact_obstacle_<k>_mu, -contact_pair_<k>_mu)", "SPContactSetFromOptions", c->mu, &c->mu, NULL));
   PetscCall(PetscOptionsReal("-contact_friction_alpha", "Tangential penalty factor: eps_T = alpha_T E / h (default: -contact_alpha)", "SPContactSetFromOptions", c->alphaT, &c->alphaT, &setAlphaT));
   PetscCall(PetscOptionsReal("-contact_friction_creep_rtol", "Friction, methods that update the shift: converged only when no stuck point moves more than rtol x h in the step", "SPContactSetFromOptions", c->creepRtol, &c->creepRtol, NULL));
-  PetscCall(PetscOptionsInt("-contact_friction_max_flips", "Friction: stick/slip changes of a point in a load step after which its status is kept (friction.md safeguard)", "SPContactSetFromOptions", c->maxFlips, &c->maxFlips, NULL));
+  PetscCall(PetscOptionsInt("-contact_friction_max_flips", "Friction: stick/slip changes of a point in a load step after which it slips for the rest of the step (a chattering point; friction.md safeguard)", "SPContactSetFromOptions", c->maxFlips, &c->maxFlips, NULL));
   PetscCall(PetscOptionsReal("-contact_friction_slip_rtol", "Friction, methods that update the shift: converged only when the tangential shift of slipping points changes by at most rtol x mu p / eps_T", "SPContactSetFromOptions", c->slipRtol, &c->slipRtol, NULL));
   if (!setAlphaT) c->alphaT = -1.0; /* resolved to alpha once -contact_alpha is known */
   PetscFunctionReturn(PETSC_SUCCESS);
