@@ -304,12 +304,41 @@ static PetscErrorCode SetUpStatic(SPContact c)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* With alpha (not an absolute penalty), a pair's slave points take eps = alpha E / h with E the
+   larger of their own material's and the stiffest material on the pair's master surface: the two
+   sides of a contact then get the same scale (with two passes both passes contract alike; with the
+   slave's own E alone the mirrored pass on a 10x softer body contracted 10x slower). One material:
+   no change. */
+static PetscErrorCode PairPenalties(SPContact c)
+{
+  PetscReal Em[2 * SP_MAX_PAIRS] = {0}, Eall[2 * SP_MAX_PAIRS];
+
+  PetscFunctionBeginUser;
+  if (c->penalty > 0.0) PetscFunctionReturn(PETSC_SUCCESS);
+  for (PetscInt j = 0; j < c->nmfOwned; ++j)
+    for (PetscInt a = 0; a < c->own[j].nv; ++a) {
+      PetscReal E;
+      PetscCall(SPProblemGetVertexYoung(c->problem, c->mfVert[j * SP_FACET_MAXV + a], &E));
+      Em[c->own[j].pair] = PetscMax(Em[c->own[j].pair], E);
+    }
+  PetscCallMPI(MPI_Allreduce(Em, Eall, (PetscMPIInt)c->npair, MPIU_REAL, MPI_MAX, PetscObjectComm((PetscObject)c->dm)));
+  for (PetscInt i = 0; i < c->n; ++i) {
+    SPContactPoint *pt = &c->pt[i];
+    PetscReal       E  = pt->eps * pt->h / c->alpha;
+    for (PetscInt k = 0; k < c->npair; ++k)
+      if (pt->pairMask & ((PetscInt)1 << k)) E = PetscMax(E, Eall[k]);
+    pt->eps = c->alpha * E / pt->h;
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode SPContactPairsSetUp(SPContact c)
 {
   PetscFunctionBeginUser;
   if (!c->npair) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(OwnedFacets(c, &c->nmfOwned, &c->own, &c->mfVert));
   PetscCall(SetUpStatic(c));
+  PetscCall(PairPenalties(c));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

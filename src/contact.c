@@ -186,12 +186,12 @@ PetscErrorCode SPContactSetUp(SPContact c)
     PetscCall(SPMeshCreateCompletedLabel(c->dm, c->pair[k].label, c->pair[k].nslave, c->pair[k].slave, "spcontact_slave", &slave));
   PetscCall(SPContactPointsSetUp(c, slave));
   PetscCall(SPContactComputeAreas(c));
-  PetscCall(SPFrictionSetUp(c));
   PetscCall(DMCreateGlobalVector(c->dm, &c->Fc));
   PetscCall(VecCreateMPI(comm, c->n * c->dim, PETSC_DETERMINE, &c->fvec));
   PetscCall(VecSetOption(c->fvec, VEC_IGNORE_NEGATIVE_INDICES, PETSC_TRUE));
   PetscCall(VecSetOption(c->Fc, VEC_IGNORE_NEGATIVE_INDICES, PETSC_TRUE));
   PetscCall(SPContactPairsSetUp(c));
+  PetscCall(SPFrictionSetUp(c));
   PetscCallMPI(MPI_Allreduce(&c->n, &nAll, 1, MPIU_INT, MPI_SUM, comm));
   PetscCheck(nAll > 0, comm, PETSC_ERR_USER_INPUT, "-contact_values: the slave boundary has no vertices");
   PetscFunctionReturn(PETSC_SUCCESS);
