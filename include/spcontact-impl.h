@@ -37,6 +37,7 @@ typedef struct {
   PetscBool linear;       /* stress linear in the strain: stiffness reuse is exact */
   PetscBool fastOperator; /* isotropic linear elasticity with param = (lambda, mu): the fast element
                              operator (fast-elastic.c) implements it and may replace PetscFE */
+  PetscPointFunc mmsSource; /* the body force of the manufactured solution for this law (NULL: none) */
 } SPMaterialLaw;
 PETSC_EXTERN void           SPMaterialParameters_LinearElastic(PetscReal, PetscReal, PetscReal[]);
 PETSC_EXTERN PetscErrorCode SPMaterialSetUp_LinearElastic(PetscDS, const PetscReal[], PetscScalar[]);

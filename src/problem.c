@@ -7,8 +7,8 @@
 /* The material laws. A law declares what the solver may assume: `linear` (stiffness reuse is
    exact) and `fastOperator` (the fast element operator implements it; fast-elastic.c). */
 static const SPMaterialLaw SPMaterialLaws[] = {
-  /* name            parameters                          setup                          linear      fastOperator */
-  {"linear_elastic", SPMaterialParameters_LinearElastic, SPMaterialSetUp_LinearElastic, PETSC_TRUE, PETSC_TRUE},
+  /* name            parameters                          setup                          linear      fastOperator  manufactured body force */
+  {"linear_elastic", SPMaterialParameters_LinearElastic, SPMaterialSetUp_LinearElastic, PETSC_TRUE, PETSC_TRUE,   SPElasticF0MMS},
 };
 #define SP_NLAWS ((PetscInt)(sizeof(SPMaterialLaws) / sizeof(SPMaterialLaws[0])))
 
@@ -390,8 +390,11 @@ PetscErrorCode SPProblemSetUp(SPProblem p)
   p->fastOperator = law->fastOperator;
   constants[SP_C_LOAD] = p->load;
   constants[SP_C_MMS]  = p->mmsAmp;
-  if (p->mmsAmp != 0.0) {
-    PetscCall(PetscDSSetResidual(ds, 0, SPElasticF0MMS, SPElasticF1));
+  if (p->mmsAmp != 0.0) { /* the law's own stress kernel, plus its manufactured body force */
+    PetscPointFunc f0, f1;
+    PetscCheck(law->mmsSource, comm, PETSC_ERR_USER_INPUT, "-material_mms: the law %s has no manufactured solution; use linear_elastic", law->name);
+    PetscCall(PetscDSGetResidual(ds, 0, &f0, &f1));
+    PetscCall(PetscDSSetResidual(ds, 0, law->mmsSource, f1));
     PetscCall(PetscDSSetExactSolution(ds, 0, SPMMSExact, &p->mmsAmp));
   }
   PetscCall(SPBCAddToDS(p->dm, p->nbc, p->bc, constants));
