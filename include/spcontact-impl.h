@@ -210,6 +210,8 @@ struct _n_SPContact {
   SPContactPoint *pt;
   SPPointState   *saved;     /* state at the start of the load step (cut-back) */
   PetscReal      *gapStart;  /* gaps at the start of the Newton step (step control) */
+  PetscReal      *slipStart; /* per point (3): trial and cone radius of a slipping point at the start of the Newton step, else 0 */
+  PetscBool       slipLimited; /* the last Newton step was cut by the tangential step control */
   PetscReal      *hist;      /* update history: params.history (s, g) pairs per point, newest last */
   PetscInt       *nhist;
   PetscInt       *known;     /* per point: master facets already in the Jacobian pattern */
@@ -268,6 +270,8 @@ PETSC_EXTERN PetscErrorCode SPFrictionAddResidual(SPContact);
 PETSC_EXTERN PetscErrorCode SPFrictionAddJacobian(SPContact, Mat);
 PETSC_EXTERN PetscErrorCode SPFrictionAnchor(SPContact, PetscBool);
 PETSC_EXTERN PetscErrorCode SPFrictionUpdate(SPContact, PetscReal *);
+PETSC_EXTERN void           SPFrictionStepStart(SPContact);
+PETSC_EXTERN PetscReal      SPFrictionStepLimit(SPContact);
 PETSC_EXTERN PetscErrorCode SPFrictionBookkeep(SPContact, PetscBool);
 PETSC_EXTERN PetscBool      SPFrictionConverged(SPContact);
 PETSC_EXTERN PetscErrorCode SPFrictionSettled(SPContact, PetscBool *);

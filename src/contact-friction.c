@@ -147,10 +147,20 @@ void SPFrictionTraction(SPContact c, PetscInt i, PetscReal y[], PetscReal t[], P
   if (pt->geo.mu <= 0.0 || k <= 0.0 || !pt->st.anchored || pt->geo.anchorLost) return;
   for (PetscInt a = 0; a < nt; ++a) y[a] = -pt->epsT * (pt->geo.dgT[a] + pt->st.sT[a]);
   *stick = SPCoulombReturn(nt, y, pt->geo.mu * p, t);
-  if (pt->st.flips > c->maxFlips && *stick) { /* a chattering point slips for the rest of the step */
-    const PetscReal ny = SPNorm(nt, y), r = pt->geo.mu * p;
-    *stick = PETSC_FALSE;
-    for (PetscInt a = 0; a < nt; ++a) t[a] = ny > 0.0 ? r * y[a] / ny : 0.0;
+  if (pt->st.flips > c->maxFlips) { /* a chattering point slips for the rest of the step */
+    const PetscReal ny = SPNorm(nt, y), r = pt->geo.mu * p, nd = SPNorm(nt, pt->st.dir);
+    /* ... and keeps the direction of its last slip (a reversal is a status change too): inside
+       the cone y/|y| is noise near y = 0, its sign flips from one iterate to the next, each flip
+       a jump of 2 mu p in the residual and a status change, so the step never converged. y is
+       put on the cone edge in that direction: the tangent and the step control see a slipping
+       point. Without a slip direction yet, the return map's. */
+    if (nd > 0.0) {
+      *stick = PETSC_FALSE;
+      for (PetscInt a = 0; a < nt; ++a) t[a] = r * pt->st.dir[a] / nd, y[a] = t[a];
+    } else if (*stick) {
+      *stick = PETSC_FALSE;
+      for (PetscInt a = 0; a < nt; ++a) t[a] = ny > 0.0 ? r * y[a] / ny : 0.0;
+    }
   }
 }
 
@@ -188,7 +198,7 @@ PetscErrorCode SPFrictionAddJacobian(SPContact c, Mat J)
     PetscInt    nd, dofs[SP_FRIC_MAXD];
     PetscReal   A, p, k, y[2], t[2], N[SP_FRIC_MAXD], BT[2 * SP_FRIC_MAXD], K[SP_FRIC_MAXD * SP_FRIC_MAXD];
     PetscScalar Ks[SP_FRIC_MAXD * SP_FRIC_MAXD];
-    PetscBool   stick;
+    PetscBool   stick, frozen;
     SPContactPointTraction(c, i, &p, &k);
     if (c->pt[i].geo.mu <= 0.0 || k <= 0.0) continue;
     SPFrictionTraction(c, i, y, t, &stick);
@@ -197,7 +207,10 @@ PetscErrorCode SPFrictionAddJacobian(SPContact c, Mat J)
     /* A point whose slip just reversed gets the stick (elastic) tangent for one iteration: the
        slip tangent has no tangential stiffness (none at all in 2D), so Newton would throw it back
        across the cone again; its residual stays the slip traction */
-    SPFrictionElement(nd, nt, A, c->pt[i].epsT, c->pt[i].geo.mu, p, k, BT, N, y, t, stick || c->pt[i].st.reversed, NULL, K);
+    /* A chattering point slipping in its frozen direction (SPFrictionTraction): t = mu p dir does
+       not depend on the tangential motion, only the normal coupling remains */
+    frozen = c->pt[i].st.flips > c->maxFlips && SPNorm(nt, c->pt[i].st.dir) > 0.0 ? PETSC_TRUE : PETSC_FALSE;
+    SPFrictionElement(nd, nt, A, frozen ? 0.0 : c->pt[i].epsT, c->pt[i].geo.mu, p, k, BT, N, y, t, !frozen && (stick || c->pt[i].st.reversed), NULL, K);
     for (PetscInt j = 0; j < nd * nd; ++j) Ks[j] = K[j];
     PetscCall(MatSetValues(J, nd, dofs, nd, dofs, Ks, ADD_VALUES));
   }
@@ -428,4 +441,56 @@ PetscErrorCode SPFrictionForces(SPContact c, Vec f, PetscReal fm[])
     PetscCall(VecSetValues(f, nd, idx, fs, ADD_VALUES));
   }
   PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Tangential Newton step control, the counterpart of the penetration cap of SPContactLimitStep.
+   The slip tangent carries no tangential stiffness along the slip direction (none at all in 2D):
+   the linearisation holds the friction force of a slipping point at mu p m, so a step that moves
+   the point back against its slip (unloading it towards stick, or reversing it) is sized by the
+   elasticity of the body behind the point, about 2 mu p L/E, instead of by the width 2 mu p/eps_T
+   of the stick cone; it overshoots by about eps_T L/E (tens to hundreds), the point lands deep in
+   reverse slip, and the next step throws it back (F1b, shifted: corners alternating between open
+   and deep penetration, the rest of the base sliding back and forth over full slip). So: record the
+   trial y0 of the points slipping at the start of the step (SPFrictionStepStart, state X); where
+   the step would carry the trial component along the slip direction m0 = y0/|y0| (linear in u:
+   Dg_T is, s_T is fixed in the step) past the far edge of the cone (a reversal the linearisation
+   cannot see), scale the step so that it stops at 0, the centre of the cone: the point then sticks
+   at the new iterate and gets the stick tangent, exact for it. A step that ends inside the cone is
+   not cut (the stick tangent of the next iteration handles it). A point limits at most once per
+   reversal (it no longer slips after the limited step). */
+void SPFrictionStepStart(SPContact c)
+{
+  const PetscInt nt = c->dim - 1;
+
+  for (PetscInt i = 0; i < c->n; ++i) {
+    PetscReal y[2], t[2];
+    PetscBool stick;
+    c->slipStart[3 * i] = c->slipStart[3 * i + 1] = c->slipStart[3 * i + 2] = 0.0;
+    if (!c->friction) continue;
+    SPFrictionTraction(c, i, y, t, &stick);
+    /* return-map slip only: a chattering point slips in its frozen direction (y = t), whatever y */
+    if (stick || (t[0] == 0.0 && t[1] == 0.0) || SPNorm(nt, y) <= SPNorm(nt, t)) continue;
+    for (PetscInt a = 0; a < nt; ++a) c->slipStart[3 * i + a] = y[a];
+    c->slipStart[3 * i + 2] = SPNorm(nt, t);
+  }
+}
+
+/* The largest step fraction (<= 1) of SPFrictionStepStart's rule at the proposed iterate (local) */
+PetscReal SPFrictionStepLimit(SPContact c)
+{
+  const PetscInt nt = c->dim - 1;
+  PetscReal      theta = 1.0;
+
+  if (!c->friction) return theta;
+  for (PetscInt i = 0; i < c->n; ++i) {
+    const SPContactPoint *pt = &c->pt[i];
+    const PetscReal      *y0 = &c->slipStart[3 * i], r0 = y0[2];
+    const PetscReal       n0 = SPNorm(nt, y0);
+    PetscReal             a0, a1 = 0.0;
+    if (n0 == 0.0 || !pt->st.anchored || pt->geo.anchorLost) continue;
+    a0 = n0; /* y0 . m0 */
+    for (PetscInt a = 0; a < nt; ++a) a1 -= pt->epsT * (pt->geo.dgT[a] + pt->st.sT[a]) * y0[a] / n0;
+    if (a1 < -r0) theta = PetscMin(theta, a0 / (a0 - a1));
+  }
+  return theta;
 }

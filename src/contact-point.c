@@ -45,7 +45,7 @@ static PetscErrorCode CollectPoints(SPContact c)
   PetscCall(VecGetLocalSize(v, &c->n));
   PetscCall(VecGetOwnershipRange(v, &c->rstart, NULL));
   PetscCall(VecDestroy(&v));
-  PetscCall(PetscCalloc3(c->n, &c->pt, c->n, &c->saved, c->n, &c->gapStart));
+  PetscCall(PetscCalloc4(c->n, &c->pt, c->n, &c->saved, c->n, &c->gapStart, 3 * c->n, &c->slipStart));
   PetscCall(PetscCalloc1(c->n * SP_KNOWN_FACETS, &c->known));
   for (PetscInt i = 0; i < c->n * SP_KNOWN_FACETS; ++i) c->known[i] = -1;
   PetscCall(DMGetCoordinatesLocal(c->dm, &coords));
@@ -129,7 +129,7 @@ PetscErrorCode SPContactPointsSetUp(SPContact c, DMLabel slave)
 PetscErrorCode SPContactPointsDestroy(SPContact c)
 {
   PetscFunctionBeginUser;
-  PetscCall(PetscFree3(c->pt, c->saved, c->gapStart));
+  PetscCall(PetscFree4(c->pt, c->saved, c->gapStart, c->slipStart));
   PetscCall(PetscFree(c->known));
   PetscCall(PetscFree2(c->hist, c->nhist));
   PetscCall(VecDestroy(&c->evalX));

@@ -129,6 +129,10 @@ PetscErrorCode SPContactNewtonUpdate(SPContact c, Vec W, PetscBool *changed)
   PetscFunctionBeginUser;
   PetscCall(SPContactEvaluate(c, W));
   PetscCall(ShiftUpdateApplies(c, &applies, &settled));
+  /* A step cut by the tangential step control (friction only) ends at a point that no Newton step
+     produced: updating the shifts there (normal and tangential) would lock its imbalance in */
+  if (c->slipLimited) applies = settled = PETSC_FALSE;
+  c->slipLimited = PETSC_FALSE;
 
   if (applies)
     for (PetscInt i = 0; i < c->n; ++i) {
@@ -152,7 +156,10 @@ PetscErrorCode SPContactNewtonUpdate(SPContact c, Vec W, PetscBool *changed)
 /* Newton step control on the proposed iterate W = X - Y: scale the step so that no point that is
    not yet deep gets deeper than stepCap*h in one step (gaps interpolated linearly along the step).
    It matters when a load-controlled body touches at one point: its first step is otherwise
-   sized by a single penalty spring. Inactive once penetrations are small. */
+   sized by a single penalty spring. Inactive once penetrations are small. With friction, the
+   tangential counterpart (SPFrictionStepLimit): no slipping point is carried in one step across
+   its stick cone into reverse slip; it stops at the centre of the cone. -contact_step_cap 0 turns
+   both off. */
 PetscErrorCode SPContactLimitStep(SPContact c, Vec X, Vec Y, Vec W, PetscBool *changed)
 {
   PetscReal theta = 1.0, all;
@@ -162,10 +169,18 @@ PetscErrorCode SPContactLimitStep(SPContact c, Vec X, Vec Y, Vec W, PetscBool *c
   if (c->stepCap <= 0.0) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(SPContactEvaluate(c, X));
   for (PetscInt i = 0; i < c->n; ++i) c->gapStart[i] = c->pt[i].geo.gap;
+  SPFrictionStepStart(c);
   PetscCall(SPContactEvaluate(c, W));
   for (PetscInt i = 0; i < c->n; ++i) {
     const PetscReal cap = c->stepCap * c->pt[i].h, g = c->pt[i].geo.gap, g0 = c->gapStart[i];
     if (g < -cap && g0 > -cap) theta = PetscMin(theta, (g0 + cap) / (g0 - g));
+  }
+  if (c->friction) {
+    const PetscReal thetaT = SPFrictionStepLimit(c);
+    PetscReal       tall;
+    PetscCallMPI(MPI_Allreduce(&thetaT, &tall, 1, MPIU_REAL, MPI_MIN, PetscObjectComm((PetscObject)c->dm)));
+    c->slipLimited = tall < 1.0 ? PETSC_TRUE : PETSC_FALSE;
+    theta          = PetscMin(theta, tall);
   }
   PetscCallMPI(MPI_Allreduce(&theta, &all, 1, MPIU_REAL, MPI_MIN, PetscObjectComm((PetscObject)c->dm)));
   if (all < 1.0) {

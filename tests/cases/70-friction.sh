@@ -59,6 +59,20 @@ test_friction_f1b_proportional_shifted() {
   assert_le max_penetration "$(sval "$out" contact_max_penetration)" 1e-10 || rc=1
   return $rc
 }
+# Two-phase loading (pressure, then the drive) with the updated shifts: no cut-backs (the
+# tangential step control and the direction-frozen chattering points of contact-friction.c);
+# shifted on 1 and 2 ranks, alm on 1
+test_friction_f1b_shifted() {
+  local rc=0
+  for run in shifted:1 shifted:2 alm:1; do
+    local m=${run%:*} np=${run#*:} out=$CASE_DIR/${run%:*}_np${run#*:}.txt
+    friction_run "${m}_np$np" "$np" -options_file input/friction_slide2d.opts -contact_method "$m" || return 1
+    assert_eq "cutbacks_${m}_np$np" "$(sval "$out" cutbacks)" 0 || rc=1
+    assert_close "tangential_force_${m}_np$np" "$(sval "$out" contact_tangential_force_x)" -0.003 1e-8 || rc=1
+    assert_le "newton_${m}_np$np" "$(sval "$out" newton_iterations)" 100 || rc=1
+  done
+  return $rc
+}
 
 # F4: frictional patch test on the non-matching B5 pair, two-pass: contact pressure q and
 # tangential traction tau at every point to 1e-6, no slip, forces balanced, top u_y = -0.01
