@@ -29,7 +29,7 @@ f1a_case() { # f1a_case METHOD NP
   return $rc
 }
 test_friction_f1a_penalty() { f1a_case penalty 1; }
-test_friction_f1a_shifted() { f1a_case shifted 1 && f1a_case shifted 2; }
+test_friction_f1a_shifted() { f1a_case shifted 1 && f1a_case shifted 2 && f1a_case shifted 3; }
 test_friction_f1a_alm()     { f1a_case alm 1; }
 
 # The seed's friction claim on F1a: shifted removes the creep with at most 3 Newton iterations
@@ -64,7 +64,7 @@ test_friction_f1b_proportional_shifted() {
 # shifted on 1 and 2 ranks, alm on 1
 test_friction_f1b_shifted() {
   local rc=0
-  for run in shifted:1 shifted:2 alm:1; do
+  for run in shifted:1 shifted:2 shifted:3 alm:1; do
     local m=${run%:*} np=${run#*:} out=$CASE_DIR/${run%:*}_np${run#*:}.txt
     friction_run "${m}_np$np" "$np" -options_file input/friction_slide2d.opts -contact_method "$m" || return 1
     assert_eq "cutbacks_${m}_np$np" "$(sval "$out" cutbacks)" 0 || rc=1
@@ -92,6 +92,15 @@ test_friction_f4_patch() {
       assert_close top_u "$(sval "$out" displacement_max)" 0.01 1e-6 || rc=1
     fi
   done
+  return $rc
+}
+
+# F4 on 3 ranks (the interface cut by the partition): the figures of 1 rank
+test_friction_f4_patch_np3() {
+  local rc=0
+  for np in 1 3; do friction_run "np$np" "$np" -options_file input/friction_patch_4_5.opts -contact_method shifted || return 1; done
+  same_summary "$CASE_DIR/np1.txt" "$CASE_DIR/np3.txt" 1e-8 contact_force_x contact_force_y contact_force_master_x contact_peak_pressure displacement_max contact_stick_points || rc=1
+  assert_le stick_creep_np3 "$(sval "$CASE_DIR/np3.txt" contact_max_stick_creep)" 2e-11 || rc=1
   return $rc
 }
 
