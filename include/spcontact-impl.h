@@ -41,6 +41,7 @@ typedef struct {
 } SPMaterialLaw;
 PETSC_EXTERN void           SPMaterialParameters_LinearElastic(PetscReal, PetscReal, PetscReal[]);
 PETSC_EXTERN PetscErrorCode SPMaterialSetUp_LinearElastic(PetscDS, const PetscReal[], PetscScalar[]);
+PETSC_EXTERN PetscErrorCode SPMaterialSetUp_NeoHookean(PetscDS, const PetscReal[], PetscScalar[]);
 
 /* One material: a law and its data, on the cells of one label value (region materials) or on
    every cell (the default material, value -1) */

@@ -9,6 +9,7 @@
 static const SPMaterialLaw SPMaterialLaws[] = {
   /* name            parameters                          setup                          linear      fastOperator  manufactured body force */
   {"linear_elastic", SPMaterialParameters_LinearElastic, SPMaterialSetUp_LinearElastic, PETSC_TRUE, PETSC_TRUE,   SPElasticF0MMS},
+  {"neo_hookean",    SPMaterialParameters_LinearElastic, SPMaterialSetUp_NeoHookean,    PETSC_FALSE, PETSC_FALSE, NULL          },
 };
 #define SP_NLAWS ((PetscInt)(sizeof(SPMaterialLaws) / sizeof(SPMaterialLaws[0])))
 
@@ -95,7 +96,7 @@ static PetscErrorCode RegionSetFromOptions(SPProblem p, PetscInt k, PetscBool gi
   PetscCall(PetscSNPrintf(prefix, sizeof(prefix), "material_%" PetscInt_FMT "_", k));
   PetscOptionsBegin(comm, prefix, "Region materials -material_<k>_*, k = 0..7 (shown for k = 0; without any, -material_model/_E/_nu apply to every cell)", "spcontact");
   PetscCall(PetscOptionsInt("-label_value", "Region material k = 0..7: the cells of this value of -material_label (a gmsh physical surface in 2D, volume in 3D); with region materials every cell needs exactly one", "SPProblemSetFromOptions", m->value, &m->value, &set));
-  PetscCall(PetscOptionsString("-law", "Region material k: material law, linear_elastic (default: -material_model)", "SPProblemSetFromOptions", m->lawName, m->lawName, sizeof(m->lawName), NULL));
+  PetscCall(PetscOptionsString("-law", "Region material k: material law, linear_elastic or neo_hookean (default: -material_model)", "SPProblemSetFromOptions", m->lawName, m->lawName, sizeof(m->lawName), NULL));
   PetscCall(PetscOptionsReal("-E", "Region material k: Young's modulus E > 0 (default: -material_E)", "SPProblemSetFromOptions", m->E, &m->E, NULL));
   PetscCall(PetscOptionsReal("-nu", "Region material k: Poisson's ratio, -1 < nu < 0.5 (default: -material_nu)", "SPProblemSetFromOptions", m->nu, &m->nu, NULL));
   PetscOptionsEnd();
@@ -116,7 +117,7 @@ PetscErrorCode SPProblemSetFromOptions(SPProblem p)
 
   PetscFunctionBeginUser;
   PetscOptionsBegin(comm, NULL, "Material options", "spcontact");
-  PetscCall(PetscOptionsString("-material_model", "Material law of every cell (without -material_<k>_*; else the default of -material_<k>_law): linear_elastic", "SPProblemSetFromOptions", p->material, p->material, sizeof(p->material), NULL));
+  PetscCall(PetscOptionsString("-material_model", "Material law of every cell (without -material_<k>_*; else the default of -material_<k>_law): linear_elastic (small strain) or neo_hookean (compressible, finite strain)", "SPProblemSetFromOptions", p->material, p->material, sizeof(p->material), NULL));
   PetscCall(PetscOptionsReal("-material_E", "Young's modulus E > 0 (of every cell; with region materials the default of -material_<k>_E)", "SPProblemSetFromOptions", p->E, &p->E, NULL));
   PetscCall(PetscOptionsReal("-material_nu", "Poisson's ratio, -1 < nu < 0.5 (of every cell; with region materials the default of -material_<k>_nu)", "SPProblemSetFromOptions", p->nu, &p->nu, NULL));
   PetscCall(PetscOptionsString("-material_label", "Cell label whose values -material_<k>_label_value select the region materials (gmsh physical surfaces/volumes)", "SPProblemSetFromOptions", p->matLabel, p->matLabel, sizeof(p->matLabel), NULL));

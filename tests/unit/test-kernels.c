@@ -2,7 +2,8 @@
    random states, 2D and 3D. PETSc is used for types, PetscInitialize and random numbers only
    (PETSCRANDER48, fixed seed: the same states on every machine).
 
-     elasticity    SPElasticF1 = dW/du_x (W the strain energy), SPElasticG3 = dF1/du_x,
+     laws          F1 = dW/du_x (W the strain energy), G3 = dF1/du_x for small-strain elasticity
+                   (SPElasticF1/G3) and Neo-Hookean (SPNeoHookeanF1/G3, |u_x| <= 0.3),
                    SPElasticElementStiffness = df/du, f the element internal force built from
                    SPElasticStress (P1 triangle/tet, Q1 quad/hex at 2^dim Gauss points, random sets)
      obstacles     n = dg/dx and Hg = dn/dx of SPObstacleGap (plane, sphere, cylinder)
@@ -28,6 +29,7 @@
 #include <petscsys.h>
 #include <kernels/tensor.h>
 #include <kernels/elastic.h>
+#include <kernels/neohookean.h>
 #include <kernels/contact-law.h>
 #include <kernels/contact-pair.h>
 #include <kernels/contact-friction.h>
@@ -164,23 +166,50 @@ static PetscReal ElasticEnergy(PetscInt dim, PetscReal lambda, PetscReal mu, con
   return W + 0.5 * lambda * tr * tr;
 }
 
-static void ElasticF1(PetscInt dim, const PetscScalar constants[], const PetscReal ux[], PetscReal f1[])
+/* W = mu/2 (I1 - 3) - mu ln J + lambda/2 (ln J)^2 with F = I + u_x (2D: F_33 = 1), written out
+   here independently of kernels/neohookean.h */
+static PetscReal NeoHookeanEnergy(PetscInt dim, PetscReal lambda, PetscReal mu, const PetscReal ux[])
+{
+  PetscReal F[9], I1 = 3.0 - dim, J, lnJ;
+  for (PetscInt i = 0; i < dim; ++i)
+    for (PetscInt j = 0; j < dim; ++j) {
+      F[i * dim + j] = ux[i * dim + j] + (i == j);
+      I1 += F[i * dim + j] * F[i * dim + j];
+    }
+  J   = Det(dim, F);
+  lnJ = PetscLogReal(J);
+  return 0.5 * mu * (I1 - 3.0) - mu * lnJ + 0.5 * lambda * lnJ * lnJ;
+}
+
+/* A material law's pointwise kernels and its strain energy, for the FD checks */
+typedef struct {
+  const char *name;
+  PetscReal (*energy)(PetscInt, PetscReal, PetscReal, const PetscReal[]);
+  void (*f1)(SP_KERNEL_ARGS, const PetscReal[], PetscInt, const PetscScalar[], PetscScalar[]);
+  void (*g3)(SP_KERNEL_ARGS, PetscReal, const PetscReal[], PetscInt, const PetscScalar[], PetscScalar[]);
+  PetscReal gradient; /* random displacement gradients in [-gradient, gradient] (J > 0 for finite strain) */
+} LawKernels;
+
+static void LawF1(const LawKernels *law, PetscInt dim, const PetscScalar constants[], const PetscReal ux[], PetscReal f1[])
 {
   const PetscInt  off[1] = {0};
   const PetscReal x[3]   = {0.0, 0.0, 0.0};
   PetscScalar     u[3]   = {0.0, 0.0, 0.0};
-  SPElasticF1(dim, 1, 0, off, off, u, NULL, ux, NULL, NULL, NULL, NULL, NULL, 0.0, x, SP_C_NUM, constants, f1);
+  law->f1(dim, 1, 0, off, off, u, NULL, ux, NULL, NULL, NULL, NULL, NULL, 0.0, x, SP_C_NUM, constants, f1);
 }
 
 /* F1 against the energy, G3 against F1 at random gradients and material constants */
-static PetscErrorCode CheckElasticPointwise(Ctx *c, PetscInt dim)
+static PetscErrorCode CheckLawPointwise(Ctx *c, PetscInt dim, const LawKernels *law)
 {
   const PetscInt n = dim * dim;
+  char           name[64];
   Stat           sf, sg;
 
   PetscFunctionBeginUser;
-  StatInit(&sf, dim, "elastic_f1_vs_energy");
-  StatInit(&sg, dim, "elastic_g3_vs_f1");
+  PetscCall(PetscSNPrintf(name, sizeof(name), "%s_f1_vs_energy", law->name));
+  StatInit(&sf, dim, name);
+  PetscCall(PetscSNPrintf(name, sizeof(name), "%s_g3_vs_f1", law->name));
+  StatInit(&sg, dim, name);
   for (PetscInt k = 0; k < c->samples; ++k) {
     PetscScalar     constants[SP_C_NUM] = {0};
     PetscReal       ux[9], up[9], um[9], f1[9], fp[9], fm[9], fd[9], g3[81], g[81], gfd[81];
@@ -190,16 +219,16 @@ static PetscErrorCode CheckElasticPointwise(Ctx *c, PetscInt dim)
     PetscReal       lambda = Rnd(c, 0.1, 10.0), mu = Rnd(c, 0.1, 10.0), h;
 
     constants[SP_C_LAMBDA] = lambda, constants[SP_C_MU] = mu;
-    for (PetscInt i = 0; i < n; ++i) ux[i] = Rnd(c, -1.0, 1.0);
+    for (PetscInt i = 0; i < n; ++i) ux[i] = Rnd(c, -law->gradient, law->gradient);
     h = c->step * PetscMax(1.0, MaxAbs(n, ux));
-    ElasticF1(dim, constants, ux, f1);
-    SPElasticG3(dim, 1, 0, off, off, u, NULL, ux, NULL, NULL, NULL, NULL, NULL, 0.0, 0.0, x, SP_C_NUM, constants, g3);
+    LawF1(law, dim, constants, ux, f1);
+    law->g3(dim, 1, 0, off, off, u, NULL, ux, NULL, NULL, NULL, NULL, NULL, 0.0, 0.0, x, SP_C_NUM, constants, g3);
     for (PetscInt j = 0; j < n; ++j) {
       for (PetscInt i = 0; i < n; ++i) up[i] = um[i] = ux[i];
       up[j] += h, um[j] -= h;
-      fd[j] = (ElasticEnergy(dim, lambda, mu, up) - ElasticEnergy(dim, lambda, mu, um)) / (2.0 * h);
-      ElasticF1(dim, constants, up, fp);
-      ElasticF1(dim, constants, um, fm);
+      fd[j] = (law->energy(dim, lambda, mu, up) - law->energy(dim, lambda, mu, um)) / (2.0 * h);
+      LawF1(law, dim, constants, up, fp);
+      LawF1(law, dim, constants, um, fm);
       for (PetscInt i = 0; i < n; ++i) gfd[i * n + j] = (fp[i] - fm[i]) / (2.0 * h); /* d f1[i] / d u_x[j] */
     }
     /* g3[((c * dim + e) * dim + d) * dim + f] = d f1[c * dim + d] / d u_x[e * dim + f] */
@@ -214,6 +243,11 @@ static PetscErrorCode CheckElasticPointwise(Ctx *c, PetscInt dim)
   PetscCall(Report(c, &sg));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
+
+static const LawKernels lawKernels[] = {
+  {"elastic",     ElasticEnergy,    SPElasticF1,    SPElasticG3,    1.0},
+  {"neo_hookean", NeoHookeanEnergy, SPNeoHookeanF1, SPNeoHookeanG3, 0.3},
+};
 
 /* f[(a,i)] = sum_q w_q sum_d sigma_id(u_x^q) G_qad, u_x^q[i][d] = sum_b u[(b,i)] G_qbd */
 static void InternalForce(PetscInt dim, PetscInt nb, PetscInt nq, const PetscReal G[], const PetscReal w[], PetscReal lambda, PetscReal mu, const PetscReal u[], PetscReal f[])
@@ -710,7 +744,7 @@ int main(int argc, char **argv)
   PetscCall(PetscRandomSeed(c.rnd));
   PetscCall(PetscPrintf(PETSC_COMM_WORLD, "test-kernels: seed %" PetscInt_FMT ", %" PetscInt_FMT " samples per check, central FD step %.0e x the state's length, tol %.0e (max relative error)\n", seed, c.samples, (double)c.step, (double)c.tol));
   for (PetscInt dim = 2; dim <= 3; ++dim) {
-    PetscCall(CheckElasticPointwise(&c, dim));
+    for (size_t l = 0; l < sizeof(lawKernels) / sizeof(lawKernels[0]); ++l) PetscCall(CheckLawPointwise(&c, dim, &lawKernels[l]));
     PetscCall(CheckElasticElement(&c, dim, dim == 2 ? "elastic_stiffness_p1_triangle" : "elastic_stiffness_p1_tet", SimplexGradients));
     PetscCall(CheckElasticElement(&c, dim, dim == 2 ? "elastic_stiffness_q1_quad" : "elastic_stiffness_q1_hex", TensorGradients));
     PetscCall(CheckElasticElement(&c, dim, "elastic_stiffness_random_sets", RandomGradients));
