@@ -4,10 +4,11 @@
 
 A unit block (square in plane strain, or cube) with a dead nominal stress -q on its top (axis dim)
 and free lateral faces: F = diag(l1, .., l1, l2) (2D: F_33 = 1), P_lateral = 0, P_axial = -q.
-Prints l1, l2 and the largest vertex displacement of the unit block with one corner fixed laterally:
-sqrt((dim-1)(l1-1)^2 + (l2-1)^2).
+Prints l1, l2 and the largest displacement component of a block of side L placed with one corner
+fixed laterally (spcontact's summary key displacement_max, the infinity norm): L max(|l1-1|, |l2-1|).
 
-usage: neohookean_uniaxial.py DIM E NU Q"""
+usage: neohookean_uniaxial.py DIM E NU Q [L]
+"""
 import math
 import sys
 
@@ -34,8 +35,11 @@ def solve(dim, E, nu, q):
         a21 = (residual(dim, lam, mu, q, l1 + h, l2)[1] - residual(dim, lam, mu, q, l1 - h, l2)[1]) / (2 * h)
         a22 = (residual(dim, lam, mu, q, l1, l2 + h)[1] - residual(dim, lam, mu, q, l1, l2 - h)[1]) / (2 * h)
         det = a11 * a22 - a12 * a21
-        l1 -= (a22 * r1 - a12 * r2) / det
-        l2 -= (-a21 * r1 + a11 * r2) / det
+        d1, d2 = (a22 * r1 - a12 * r2) / det, (-a21 * r1 + a11 * r2) / det
+        t = 1.0
+        while min(l1 - t * d1, l2 - t * d2) <= 0.0:  # keep the stretches positive (J > 0)
+            t *= 0.5
+        l1, l2 = l1 - t * d1, l2 - t * d2
     else:
         sys.exit("neohookean_uniaxial.py: Newton did not converge in 100 iterations")
     return l1, l2
@@ -43,5 +47,6 @@ def solve(dim, E, nu, q):
 
 if __name__ == "__main__":
     dim, E, nu, q = int(sys.argv[1]), float(sys.argv[2]), float(sys.argv[3]), float(sys.argv[4])
+    L = float(sys.argv[5]) if len(sys.argv) > 5 else 1.0
     l1, l2 = solve(dim, E, nu, q)
-    print("l1 %.15e l2 %.15e displacement_max %.15e" % (l1, l2, math.sqrt((dim - 1) * (l1 - 1) ** 2 + (l2 - 1) ** 2)))
+    print("l1 %.15e l2 %.15e displacement_max %.15e" % (l1, l2, L * max(abs(l1 - 1), abs(l2 - 1))))

@@ -335,7 +335,7 @@ PetscErrorCode SPSolverSetFromOptions(SPSolver s)
 {
   SNESLineSearch ls;
   PetscBool      on;
-  PetscBool      fast = PETSC_TRUE, prealloc = PETSC_TRUE;
+  PetscBool      fast = PETSC_TRUE, prealloc = PETSC_TRUE, linear;
 
   PetscFunctionBeginUser;
   PetscCall(SPProblemIsLinear(s->problem, &s->reuse));
@@ -356,7 +356,10 @@ PetscErrorCode SPSolverSetFromOptions(SPSolver s)
   PetscCall(SNESGetLineSearch(s->snes, &ls));
   PetscCall(SNESLineSearchSetType(ls, SNESLINESEARCHBASIC));
   PetscCall(SPContactHasFriction(s->contact, &on));
-  if (on) { /* the slip tangent is non-symmetric: GMRES with the same AMG (-ksp_type overrides) */
+  PetscCall(SPProblemIsLinear(s->problem, &linear));
+  /* the slip tangent is non-symmetric, a finite-strain tangent under compression may be indefinite
+     (CG stops with DIVERGED_INDEFINITE_*): GMRES with the same AMG (-ksp_type overrides) */
+  if (on || !linear) {
     KSP ksp;
     PetscCall(SNESGetKSP(s->snes, &ksp));
     PetscCall(KSPSetType(ksp, KSPGMRES));

@@ -1,0 +1,83 @@
+# Finite strain (issue 15, first part): the compressible Neo-Hookean law (kernels/neohookean.h)
+# against the closed-form homogeneous uniaxial state (scripts/neohookean_uniaxial.py solves the
+# stress-stretch equations independently of the code), in two unit systems and on 1, 2, 3 ranks;
+# a Newton iterate that turns cells inside out is cut back; the small-load limit is linear
+# elasticity to first order in the load; the assembled Jacobian (bulk + contact) at deformed,
+# penetrated states against finite differences.
+
+# nh_uniaxial NAME DIM Q L NP OPTS... : a unit (or L-sided) block of E = 1 (or as OPTS set)
+# pressed by a dead nominal pressure Q onto a rigid frictionless plane; displacement_max against
+# the closed form (the stretches depend on Q/E only) to 1e-8 relative
+nh_uniaxial() {
+  local name=$1 dim=$2 q=$3 L=$4 np=$5 E=1; shift 5
+  local out=$CASE_DIR/$name.txt ref prev=
+  for a in "$@"; do [ "$prev" = -material_E ] && E=$a; prev=$a; done
+  spc "$out" "$np" -options_file input/block${dim}d.opts -material_model neo_hookean -output_dir "$CASE_DIR" -output_name "$name" "$@" || return 1
+  ref=$($PYTHON scripts/neohookean_uniaxial.py "$dim" 1 0.3 "$(awk -v q="$q" -v E="$E" 'BEGIN{print q / E}')" "$L" | awk '{print $6}')
+  echo "$name: newton $(sval "$out" newton_iterations) cutbacks $(sval "$out" cutbacks) penetration $(sval "$out" contact_max_penetration)"
+  assert_eq "converged_$name" "$(sval "$out" converged)" yes && assert_close "displacement_max_$name" "$(sval "$out" displacement_max)" "$ref" 1e-8
+}
+
+# 2D plane strain at q = 0.1 and 0.5 (stretch 0.68), 3D at q = 0.3 (stretch 0.76); the 2D q = 0.5
+# case again in mm-N-MPa with a 1000 mm block of steel (E = 210000 MPa, q = 105000 MPa): the same
+# stretches, displacement x 1000, Newton iterations within 1
+test_finite_strain_uniaxial() {
+  local rc=0
+  nh_uniaxial nh2d_q0.1 2 0.1 1 1 -bc_1_value 0.1 || rc=1
+  nh_uniaxial nh2d_q0.5 2 0.5 1 1 -bc_1_value 0.5 -load_steps 2 || rc=1
+  nh_uniaxial nh2d_q0.5_mm 2 105000 1000 1 -bc_1_value 105000 -material_E 210000 -dm_plex_box_upper 1000,1000 -load_steps 2 -contact_gap_tol 1e-7 || rc=1
+  nh_uniaxial nh3d_q0.3 3 0.3 1 1 -bc_2_value 0.3 -load_steps 2 || rc=1
+  local n1 n2; n1=$(sval "$CASE_DIR/nh2d_q0.5.txt" newton_iterations); n2=$(sval "$CASE_DIR/nh2d_q0.5_mm.txt" newton_iterations)
+  assert_close newton_units "$n2" "$n1" 0 1 || rc=1
+  return $rc
+}
+
+# The same figures on 1, 2 and 3 ranks
+test_finite_strain_ranks() {
+  local rc=0
+  for np in 1 2 3; do nh_uniaxial nh2d_np$np 2 0.5 1 $np -bc_1_value 0.5 -load_steps 2 || rc=1; done
+  for np in 2 3; do same_summary "$CASE_DIR/nh2d_np1.txt" "$CASE_DIR/nh2d_np$np.txt" 1e-8 displacement_max contact_force_y newton_iterations || rc=1; done
+  return $rc
+}
+
+# q = 1.2 in one load step: the first Newton iterate inverts cells (stretch < 0), the NaN stress
+# stops the solve (DIVERGED_FNORM_NAN), the step is cut back once and the run reaches the exact
+# stretch 0.476
+test_finite_strain_inversion() {
+  local out=$CASE_DIR/nh2d_q1.2.txt rc=0
+  nh_uniaxial nh2d_q1.2 2 1.2 1 1 -bc_1_value 1.2 -load_steps 1 || rc=1
+  grep -q "DIVERGED_FNORM_NAN" "$out" || { echo "no inverted iterate was caught"; rc=1; }
+  assert_ge cutbacks "$(sval "$out" cutbacks)" 1 || rc=1
+  grep -qi "nan" <(sval "$out" displacement_max) && { echo "NaN in the result"; rc=1; }
+  return $rc
+}
+
+# Small-load limit: the Neo-Hookean block's displacement differs from linear elasticity's by a
+# relative amount proportional to the load (ratio 10 +- 20 % between q = 1e-2 and 1e-3, and
+# below 1e-3 at q = 1e-3)
+test_finite_strain_small_load() {
+  local rc=0 d=()
+  for q in 0.01 0.001; do
+    spc "$CASE_DIR/lin_$q.txt" 1 -options_file input/block2d.opts -bc_1_value $q -output_dir "$CASE_DIR" -output_name lin_$q || return 1
+    spc "$CASE_DIR/nh_$q.txt" 1 -options_file input/block2d.opts -bc_1_value $q -material_model neo_hookean -output_dir "$CASE_DIR" -output_name nh_$q || return 1
+    d+=("$(awk -v a="$(sval "$CASE_DIR/lin_$q.txt" displacement_max)" -v b="$(sval "$CASE_DIR/nh_$q.txt" displacement_max)" 'BEGIN{d = (a - b) / a; print d < 0 ? -d : d}')")
+  done
+  echo "relative difference neo_hookean vs linear: q = 1e-2: ${d[0]}, q = 1e-3: ${d[1]}"
+  assert_close first_order_ratio "$(awk -v a="${d[0]}" -v b="${d[1]}" 'BEGIN{print a / b}')" 10 0.2 || rc=1
+  assert_le difference_q1e-3 "${d[1]}" 1e-3 || rc=1
+  return $rc
+}
+
+# The assembled Jacobian (Neo-Hookean bulk + contact, consistent contact tangent) against PETSc's
+# FD Jacobian at every Newton iterate: a tilted plane pressed into a 6x6 box, the B4 sphere pressed
+# 0.03 into a 4x4x4 box (penalty and shifted), and a 2D pair sliding 0.1 (penalty: this solve
+# converges before any shift update, which kjac_case requires of shifted) (kjac_case of 05-kernels.sh)
+test_finite_strain_jacobian() {
+  local rc=0
+  for m in penalty shifted; do
+    kjac_case nh_plane2d "$m" $(kjac_box2d) -material_model neo_hookean -contact_obstacle_0_type plane -contact_obstacle_0_point 0.5,0.98 -contact_obstacle_0_normal 0.196116135,-0.980580676 || rc=1
+    kjac_case nh_sphere3d "$m" -options_file input/indent3d.opts -material_model neo_hookean -dm_plex_box_faces 4,4,4 -contact_obstacle_0_motion 0,0,-0.03 || rc=1
+  done
+  kjac_case nh_slide2d penalty -options_file input/slide2d.opts -material_model neo_hookean -load_steps 1 -bc_1_value 0.1,0 || rc=1
+  return $rc
+}
