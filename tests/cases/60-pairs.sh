@@ -41,6 +41,18 @@ test_pairs_b6_shifted() {
   return $rc
 }
 
+# slide_figures OUT : from the per-step contact lines of a sliding run, the worst slave/master force
+# balance, tangential/normal force ratio, normal force variation against step 1, max penetration
+slide_figures() {
+  awk '/^contact_step/ { fx = $6; fy = $7; mx = $9; my = $10; pen = $12;
+         if (!f0) f0 = fy;
+         bal = (fy + my) / fy; if (bal < 0) bal = -bal; if (bal > mb) mb = bal;
+         t = fx / fy; if (t < 0) t = -t; if (t > mt) mt = t;
+         d = (fy - f0) / f0; if (d < 0) d = -d; if (d > md) md = d;
+         if (pen > mp) mp = pen }
+       END { printf "force_balance %.3e\ntangential_ratio %.3e\nnormal_force_variation %.3e\nmax_penetration_converged %.3e\n", mb, mt, md, mp }' "$1"
+}
+
 # Sliding: a block pressed 0.005 into a longer one, then slid 0.6 in 12 steps (slave vertices every
 # 0.12 cross master vertices every 0.2; no crossing happens exactly at a converged state). Per step: slave/master forces balance, no penetration,
 # normal force within 3 % of the first step's, tangential force tiny (frictionless).
@@ -50,13 +62,7 @@ test_pairs_slide() {
   assert_eq converged "$(sval "$out" converged)" yes || rc=1
   grep '^contact_step' "$out"
   [ "$(grep -c '^contact_step' "$out")" -eq 12 ] || { echo "expected 12 load steps"; rc=1; }
-  awk '/^contact_step/ { fx = $6; fy = $7; mx = $9; my = $10; pen = $12;
-         if (!f0) f0 = fy;
-         bal = (fy + my) / fy; if (bal < 0) bal = -bal; if (bal > mb) mb = bal;
-         t = fx / fy; if (t < 0) t = -t; if (t > mt) mt = t;
-         d = (fy - f0) / f0; if (d < 0) d = -d; if (d > md) md = d;
-         if (pen > mp) mp = pen }
-       END { printf "force_balance %.3e\ntangential_ratio %.3e\nnormal_force_variation %.3e\nmax_penetration_converged %.3e\n", mb, mt, md, mp }' "$out" > "$CASE_DIR/figs.txt"
+  slide_figures "$out" > "$CASE_DIR/figs.txt"
   cat "$CASE_DIR/figs.txt"
   # Newton iterates (not converged states) of steps 2..12: bounded by 0.05 h, the same at crossings
   awk -F, 'NR>1 { if ($6 > m[$1]) m[$1] = $6 } END { for (k in m) printf "step %d max penetration over its Newton iterates %.3e\n", k, m[k] }' "$CASE_DIR/slide2d.csv" | sort -k2 -n
