@@ -3,13 +3,14 @@
 #include <ctype.h>
 #include <spcontact-impl.h>
 #include <kernels/elastic.h>
+#include <kernels/neohookean.h>
 
 /* The material laws. A law declares what the solver may assume: `linear` (stiffness reuse is
    exact) and `fastOperator` (the fast element operator implements it; fast-elastic.c). */
 static const SPMaterialLaw SPMaterialLaws[] = {
   /* name            parameters                          setup                          linear      fastOperator  manufactured body force */
   {"linear_elastic", SPMaterialParameters_LinearElastic, SPMaterialSetUp_LinearElastic, PETSC_TRUE, PETSC_TRUE,   SPElasticF0MMS},
-  {"neo_hookean",    SPMaterialParameters_LinearElastic, SPMaterialSetUp_NeoHookean,    PETSC_FALSE, PETSC_FALSE, NULL          },
+  {"neo_hookean",    SPMaterialParameters_LinearElastic, SPMaterialSetUp_NeoHookean,    PETSC_FALSE, PETSC_FALSE, SPNeoHookeanF0MMS},
 };
 #define SP_NLAWS ((PetscInt)(sizeof(SPMaterialLaws) / sizeof(SPMaterialLaws[0])))
 

@@ -74,6 +74,31 @@ static inline void SPNeoHookeanG3(SP_KERNEL_ARGS, PetscReal u_tShift, const Pets
   SPNeoHookeanTangent(dim, PetscRealPart(constants[SP_C_LAMBDA]), PetscRealPart(constants[SP_C_MU]), u_x, g3);
 }
 
+/* Manufactured solution (u = A phi(x) e of kernels/elastic.h): f0 = Div P(F(u)) =
+   A_iJkL(F) u_k,JL balances the weak form, with u_k,J = A (k+1) phi_,J and u_k,JL = A (k+1) phi_,JL */
+static inline PetscReal SPMMSPhiGradient(PetscInt dim, const PetscReal x[], PetscInt j)
+{
+  PetscReal v = PETSC_PI;
+  for (PetscInt k = 0; k < dim; ++k) v *= k == j ? PetscCosReal(PETSC_PI * x[k]) : PetscSinReal(PETSC_PI * x[k]);
+  return v;
+}
+
+static inline void SPNeoHookeanF0MMS(SP_KERNEL_ARGS, const PetscReal x[], PetscInt numConstants, const PetscScalar constants[], PetscScalar f0[])
+{
+  const PetscReal amp = PetscRealPart(constants[SP_C_MMS]);
+  PetscScalar     ux[9], A[81];
+
+  for (PetscInt c = 0; c < dim; ++c)
+    for (PetscInt d = 0; d < dim; ++d) ux[c * dim + d] = amp * (c + 1) * SPMMSPhiGradient(dim, x, d);
+  SPNeoHookeanTangent(dim, PetscRealPart(constants[SP_C_LAMBDA]), PetscRealPart(constants[SP_C_MU]), ux, A);
+  for (PetscInt i = 0; i < dim; ++i) {
+    f0[i] = 0.0;
+    for (PetscInt k = 0; k < dim; ++k)
+      for (PetscInt a = 0; a < dim; ++a)
+        for (PetscInt b = 0; b < dim; ++b) f0[i] += A[((i * dim + k) * dim + a) * dim + b] * amp * (k + 1) * SPMMSPhiHessian(dim, x, a, b);
+  }
+}
+
 /* The same with per-cell parameters (region materials) from the auxiliary field */
 static inline void SPNeoHookeanF1Aux(SP_KERNEL_ARGS, const PetscReal x[], PetscInt numConstants, const PetscScalar constants[], PetscScalar f1[])
 {

@@ -103,11 +103,11 @@ fnd_levels_gmsh() { # square|cube
 }
 
 # --- manufactured solutions: u = A prod sin(pi x_d) (c+1), homogeneous Dirichlet on every face ---
-# fnd_mms_case LABEL NP RATE_LO RATE_HI DEGREE DIM: on the levels in FND_LEVELS
+# fnd_mms_case LABEL NP RATE_LO RATE_HI DEGREE DIM [ARGS...]: on the levels in FND_LEVELS
 fnd_mms_case() {
   local mms=$FND_MMS2D; [ "$6" = 3 ] && mms=$FND_MMS3D
   # shellcheck disable=SC2086
-  fnd_mms "$1" "$2" "$3" "$4" "${FND_LEVELS[@]}" -- $mms -petscspace_degree "$5"
+  fnd_mms "$1" "$2" "$3" "$4" "${FND_LEVELS[@]}" -- $mms -petscspace_degree "$5" "${@:7}"
 }
 
 test_foundation_mms_p1_2d() { fnd_setup; fnd_levels_gmsh square || return 1; fnd_mms_case mms_p1_2d 1 1.8 2.3 1 2; }

@@ -100,3 +100,15 @@ test_finite_strain_sliding() {
   done
   return $rc
 }
+
+# Manufactured solution with the nonlinear law (u = 0.01 prod sin(pi x_d) (c+1): strains up to
+# ~0.1; body force Div P(F(u)) from kernels/neohookean.h): optimal L2 rates, Q1 2 and Q2 3 in 2D,
+# Q1 2 in 3D on 2 ranks (fnd_mms of 10-foundation.sh)
+test_finite_strain_mms() {
+  local rc=0
+  fnd_setup
+  fnd_levels_box 2 4; fnd_mms_case nh_mms_q1_2d 1 1.8 2.3 1 2 -material_model neo_hookean || rc=1
+  fnd_levels_box 2 4; fnd_mms_case nh_mms_q2_2d 1 2.7 3.4 2 2 -material_model neo_hookean || rc=1
+  fnd_levels_box 3 2; fnd_mms_case nh_mms_q1_3d 2 1.8 2.3 1 3 -material_model neo_hookean || rc=1
+  return $rc
+}
