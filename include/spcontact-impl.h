@@ -35,13 +35,21 @@ typedef struct {
      param == NULL: per-cell parameters from the auxiliary field */
   PetscErrorCode (*setup)(PetscDS ds, const PetscReal param[], PetscScalar constants[]);
   PetscBool linear;       /* stress linear in the strain: stiffness reuse is exact */
-  PetscBool fastOperator; /* isotropic linear elasticity with param = (lambda, mu): the fast element
-                             operator (fast-elastic.c) implements it and may replace PetscFE */
+  PetscBool fastOperator; /* the fast element operator applies: isotropic linear elasticity with
+                             param = (lambda, mu) in closed form, or a nonlinear law through its
+                             stress/tangent below (fast-elastic.c); otherwise PetscFE only */
   PetscPointFunc mmsSource; /* the body force of the manufactured solution for this law (NULL: none) */
+  /* a nonlinear law's fast element operator: first Piola stress P[i dim + J] and tangent
+     A[((i dim + k) dim + J) dim + L] = dP_iJ/dF_kL from u_x and the cell's parameters (NULL: the
+     law is linear, or PetscFE only) */
+  void (*stress)(PetscInt dim, const PetscReal param[], const PetscScalar u_x[], PetscScalar P[]);
+  void (*tangent)(PetscInt dim, const PetscReal param[], const PetscScalar u_x[], PetscScalar A[]);
 } SPMaterialLaw;
 PETSC_EXTERN void           SPMaterialParameters_LinearElastic(PetscReal, PetscReal, PetscReal[]);
 PETSC_EXTERN PetscErrorCode SPMaterialSetUp_LinearElastic(PetscDS, const PetscReal[], PetscScalar[]);
 PETSC_EXTERN PetscErrorCode SPMaterialSetUp_NeoHookean(PetscDS, const PetscReal[], PetscScalar[]);
+PETSC_EXTERN void           SPMaterialStress_NeoHookean(PetscInt, const PetscReal[], const PetscScalar[], PetscScalar[]);
+PETSC_EXTERN void           SPMaterialTangent_NeoHookean(PetscInt, const PetscReal[], const PetscScalar[], PetscScalar[]);
 
 /* One material: a law and its data, on the cells of one label value (region materials) or on
    every cell (the default material, value -1) */
@@ -297,6 +305,7 @@ struct _n_SPFastElastic {
   PetscInt        *gidx, *lidx; /* per cell: global (constrained < 0) and local closure indices */
   PetscReal       *xc;          /* per cell: node coordinates, closure order */
   const PetscReal *lame;        /* per cell: lambda, mu (the problem's per-cell parameters, not owned) */
+  const SPMaterialLaw *law;     /* every cell's law: linear (K_e closed form) or its stress/tangent */
 };
 
 struct _n_SPSolver {

@@ -100,7 +100,7 @@ PETSC_EXTERN PetscErrorCode SPVertexGlobalIndices(PetscSection, PetscSection, Pe
 
 /* fast-elastic.c */
 PETSC_EXTERN PetscErrorCode SPFastElasticCreate(DM, SPProblem, SPFastElastic *);
-PETSC_EXTERN PetscErrorCode SPFastElasticAddJacobian(SPFastElastic, Mat);
+PETSC_EXTERN PetscErrorCode SPFastElasticAddJacobian(SPFastElastic, Vec, Mat);
 PETSC_EXTERN PetscErrorCode SPFastElasticAddResidual(SPFastElastic, Vec, Vec);
 PETSC_EXTERN PetscErrorCode SPFastElasticDestroy(SPFastElastic *);
 

@@ -1,5 +1,7 @@
-/* Fast bulk operator: element-level isotropic linear elasticity on first-order cells (P1/Q1, any
-   cell type, 2D and 3D through dim). Per cell K_e = sum_q w detJ B^T D B with the structure written
+/* Fast bulk operator: element-level isotropic elasticity on first-order cells (P1/Q1, any cell
+   type, 2D and 3D through dim). A nonlinear law (finite strain) goes through its pointwise stress
+   and tangent (SPMaterialLaw.stress/tangent): r_e = sum_q w detJ G^T P(F_q), K_e = sum_q w detJ
+   G^T A(F_q) G, F_q = I + sum_a u_a G_a. For the linear law: Per cell K_e = sum_q w detJ B^T D B with the structure written
    out (kernels/elastic.h) and the cell's own Lame constants (the problem's per-cell material
    parameters, so region materials are honoured), inserted with the closure indices that PETSc's own assembly uses, so the
    matrix is the generic PetscFE one to round-off: constrained (Dirichlet) dofs carry negative
@@ -159,6 +161,41 @@ static void CellStiffness(SPFastElastic f, PetscInt c, PetscReal G[], PetscReal 
   SPElasticElementStiffness(f->dim, f->nb, f->nq, G, wdetJ, f->lame[c * SP_LAW_NPARAM + SP_A_LAMBDA], f->lame[c * SP_LAW_NPARAM + SP_A_MU], K);
 }
 
+/* A nonlinear law at local cell c with nodal displacements u (closure order): the residual r and,
+   if K != NULL, the tangent K of the cell (w->work sized for one quadrature point) */
+static void CellNonlinear(SPFastElastic f, PetscInt c, const PetscScalar u[], PetscReal G[], PetscReal wdetJ[], PetscScalar r[], PetscScalar K[])
+{
+  const PetscInt   dim = f->dim, nb = f->nb, n = f->nidx;
+  const PetscReal *param = &f->lame[c * SP_LAW_NPARAM];
+  PetscScalar      ux[9], P[9], A[81];
+
+  CellGradients(f, &f->xc[c * n], G, wdetJ);
+  for (PetscInt i = 0; i < n; ++i) r[i] = 0.0;
+  if (K) for (PetscInt i = 0; i < n * n; ++i) K[i] = 0.0;
+  for (PetscInt q = 0; q < f->nq; ++q) {
+    const PetscReal *Gq = &G[q * nb * dim];
+    for (PetscInt k = 0; k < dim * dim; ++k) ux[k] = 0.0;
+    for (PetscInt a = 0; a < nb; ++a)
+      for (PetscInt i = 0; i < dim; ++i)
+        for (PetscInt J = 0; J < dim; ++J) ux[i * dim + J] += u[a * dim + i] * Gq[a * dim + J];
+    f->law->stress(dim, param, ux, P);
+    for (PetscInt a = 0; a < nb; ++a)
+      for (PetscInt i = 0; i < dim; ++i)
+        for (PetscInt J = 0; J < dim; ++J) r[a * dim + i] += wdetJ[q] * P[i * dim + J] * Gq[a * dim + J];
+    if (!K) continue;
+    f->law->tangent(dim, param, ux, A);
+    for (PetscInt a = 0; a < nb; ++a)
+      for (PetscInt i = 0; i < dim; ++i)
+        for (PetscInt b = 0; b < nb; ++b)
+          for (PetscInt k = 0; k < dim; ++k) {
+            PetscScalar v = 0.0;
+            for (PetscInt J = 0; J < dim; ++J)
+              for (PetscInt L = 0; L < dim; ++L) v += A[((i * dim + k) * dim + J) * dim + L] * Gq[a * dim + J] * Gq[b * dim + L];
+            K[(a * dim + i) * n + b * dim + k] += wdetJ[q] * v;
+          }
+  }
+}
+
 /* The geometry above agrees with PETSc's on the first cells; otherwise the fast path does not apply */
 static PetscErrorCode CheckGeometry(SPFastElastic f, PetscBool *ok)
 {
@@ -198,6 +235,7 @@ PetscErrorCode SPFastElasticCreate(DM dm, SPProblem p, SPFastElastic *fast)
   PetscCall(DMPlexGetHeightStratum(dm, 0, &f->cStart, &f->cEnd));
   PetscCheck(f->cStart == p->cStart && f->cEnd == p->cEnd, PETSC_COMM_SELF, PETSC_ERR_PLIB, "fast operator and problem see different cells");
   f->lame = p->cellParam; /* lambda, mu per cell (SP_A_LAMBDA, SP_A_MU) */
+  f->law  = p->mat[0].law;  /* every cell's (checked in problem.c) */
   PetscCall(PetscDSGetDiscretization(ds, 0, (PetscObject *)&fe));
   PetscCall(PetscFEGetQuadrature(fe, &f->quad));
   PetscCall(PetscQuadratureGetData(f->quad, NULL, NULL, &f->nq, NULL, &f->w));
@@ -217,7 +255,7 @@ PetscErrorCode SPFastElasticCreate(DM dm, SPProblem p, SPFastElastic *fast)
 /* Work space of one cell */
 typedef struct {
   PetscReal   *G, *wdetJ;
-  PetscScalar *K, *u;
+  PetscScalar *K, *u, *r;
 } Work;
 
 static PetscErrorCode WorkGet(SPFastElastic f, Work *w)
@@ -225,29 +263,36 @@ static PetscErrorCode WorkGet(SPFastElastic f, Work *w)
   const PetscInt nq = f->nq, dim = f->dim, n = f->nidx;
 
   PetscFunctionBeginUser;
-  PetscCall(PetscMalloc4(nq * f->nb * dim, &w->G, nq, &w->wdetJ, n * n, &w->K, n, &w->u));
+  PetscCall(PetscMalloc5(nq * f->nb * dim, &w->G, nq, &w->wdetJ, n * n, &w->K, n, &w->u, n, &w->r));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 static PetscErrorCode WorkRestore(Work *w)
 {
   PetscFunctionBeginUser;
-  PetscCall(PetscFree4(w->G, w->wdetJ, w->K, w->u));
+  PetscCall(PetscFree5(w->G, w->wdetJ, w->K, w->u, w->r));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* P += K (the bulk stiffness), then final assembly */
-PetscErrorCode SPFastElasticAddJacobian(SPFastElastic f, Mat P)
+/* P += K (the bulk stiffness at locX; the linear law ignores locX), then final assembly */
+PetscErrorCode SPFastElasticAddJacobian(SPFastElastic f, Vec locX, Mat P)
 {
-  Work w;
+  Work               w;
+  const PetscScalar *x;
 
   PetscFunctionBeginUser;
   PetscCall(WorkGet(f, &w));
+  PetscCall(VecGetArrayRead(locX, &x));
   for (PetscInt c = f->cStart; c < f->cEnd; ++c) {
-    const PetscInt *idx = &f->gidx[(c - f->cStart) * f->nidx];
-    CellStiffness(f, c - f->cStart, w.G, w.wdetJ, w.K);
+    const PetscInt *idx = &f->gidx[(c - f->cStart) * f->nidx], *lidx = &f->lidx[(c - f->cStart) * f->nidx];
+    if (f->law->linear) CellStiffness(f, c - f->cStart, w.G, w.wdetJ, w.K);
+    else {
+      for (PetscInt k = 0; k < f->nidx; ++k) w.u[k] = x[lidx[k]];
+      CellNonlinear(f, c - f->cStart, w.u, w.G, w.wdetJ, w.r, w.K);
+    }
     PetscCall(MatSetValues(P, f->nidx, idx, f->nidx, idx, w.K, ADD_VALUES)); /* negative (constrained) indices are skipped */
   }
+  PetscCall(VecRestoreArrayRead(locX, &x));
   PetscCall(WorkRestore(&w));
   PetscCall(MatAssemblyBegin(P, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(P, MAT_FINAL_ASSEMBLY));
@@ -279,7 +324,8 @@ static PetscErrorCode AddBoundaryResidual(SPFastElastic f, Vec locX, Vec locF)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* locF += r(locX): r_e = K_e u_e per cell (u_e holds the Dirichlet values), plus the Neumann terms */
+/* locF += r(locX): r_e = K_e u_e per cell for the linear law, the law's stress integrated otherwise
+   (u_e holds the Dirichlet values), plus the Neumann terms */
 PetscErrorCode SPFastElasticAddResidual(SPFastElastic f, Vec locX, Vec locF)
 {
   Work               w;
@@ -293,13 +339,15 @@ PetscErrorCode SPFastElasticAddResidual(SPFastElastic f, Vec locX, Vec locF)
   PetscCall(VecGetArray(locF, &y));
   for (PetscInt c = f->cStart; c < f->cEnd; ++c) {
     const PetscInt *idx = &f->lidx[(c - f->cStart) * n];
-    CellStiffness(f, c - f->cStart, w.G, w.wdetJ, w.K);
     for (PetscInt k = 0; k < n; ++k) w.u[k] = x[idx[k]];
-    for (PetscInt i = 0; i < n; ++i) {
-      PetscScalar r = 0.0;
-      for (PetscInt k = 0; k < n; ++k) r += w.K[i * n + k] * w.u[k];
-      y[idx[i]] += r;
-    }
+    if (f->law->linear) {
+      CellStiffness(f, c - f->cStart, w.G, w.wdetJ, w.K);
+      for (PetscInt i = 0; i < n; ++i) {
+        w.r[i] = 0.0;
+        for (PetscInt k = 0; k < n; ++k) w.r[i] += w.K[i * n + k] * w.u[k];
+      }
+    } else CellNonlinear(f, c - f->cStart, w.u, w.G, w.wdetJ, w.r, NULL);
+    for (PetscInt i = 0; i < n; ++i) y[idx[i]] += w.r[i];
   }
   PetscCall(VecRestoreArray(locF, &y));
   PetscCall(VecRestoreArrayRead(locX, &x));

@@ -6,11 +6,12 @@
 #include <kernels/neohookean.h>
 
 /* The material laws. A law declares what the solver may assume: `linear` (stiffness reuse is
-   exact) and `fastOperator` (the fast element operator implements it; fast-elastic.c). */
+   exact) and `fastOperator` (the fast element operator implements it; fast-elastic.c: in closed
+   form for linear isotropic elasticity, through the law's pointwise stress/tangent otherwise). */
 static const SPMaterialLaw SPMaterialLaws[] = {
-  /* name            parameters                          setup                          linear      fastOperator  manufactured body force */
-  {"linear_elastic", SPMaterialParameters_LinearElastic, SPMaterialSetUp_LinearElastic, PETSC_TRUE, PETSC_TRUE,   SPElasticF0MMS},
-  {"neo_hookean",    SPMaterialParameters_LinearElastic, SPMaterialSetUp_NeoHookean,    PETSC_FALSE, PETSC_FALSE, SPNeoHookeanF0MMS},
+  /* name            parameters                          setup                          linear       fastOperator manufactured body force  fast stress, tangent */
+  {"linear_elastic", SPMaterialParameters_LinearElastic, SPMaterialSetUp_LinearElastic, PETSC_TRUE,  PETSC_TRUE, SPElasticF0MMS,    NULL,                        NULL                        },
+  {"neo_hookean",    SPMaterialParameters_LinearElastic, SPMaterialSetUp_NeoHookean,    PETSC_FALSE, PETSC_TRUE, SPNeoHookeanF0MMS, SPMaterialStress_NeoHookean, SPMaterialTangent_NeoHookean},
 };
 #define SP_NLAWS ((PetscInt)(sizeof(SPMaterialLaws) / sizeof(SPMaterialLaws[0])))
 

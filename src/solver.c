@@ -21,7 +21,7 @@ static PetscErrorCode BulkJacobian(SPSolver s, Vec locX, Mat P)
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(s->log->bulkJacobian, 0, 0, 0, 0));
   PetscCall(MatZeroEntries(P));
-  if (s->fast) PetscCall(SPFastElasticAddJacobian(s->fast, P));
+  if (s->fast) PetscCall(SPFastElasticAddJacobian(s->fast, locX, P));
   else PetscCall(DMPlexSNESComputeJacobianFEM(s->dm, locX, P, P, NULL));
   PetscCall(PetscLogEventEnd(s->log->bulkJacobian, 0, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -97,7 +97,7 @@ static PetscErrorCode CheckFast(SPSolver s)
     PetscCall(DMLocalToGlobal(s->dm, locF, ADD_VALUES, F[k]));
     PetscCall(MatDuplicate(s->J, MAT_DO_NOT_COPY_VALUES, &A[k]));
     PetscCall(MatZeroEntries(A[k]));
-    if (k) PetscCall(SPFastElasticAddJacobian(s->fast, A[k]));
+    if (k) PetscCall(SPFastElasticAddJacobian(s->fast, locX, A[k]));
     else PetscCall(DMPlexSNESComputeJacobianFEM(s->dm, locX, A[k], A[k], NULL));
   }
   PetscCall(VecNorm(F[0], NORM_2, &nr));

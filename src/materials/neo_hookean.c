@@ -18,3 +18,14 @@ PetscErrorCode SPMaterialSetUp_NeoHookean(PetscDS ds, const PetscReal param[], P
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
+
+/* The fast element operator's pointwise stress and tangent (param: lambda, mu) */
+void SPMaterialStress_NeoHookean(PetscInt dim, const PetscReal param[], const PetscScalar u_x[], PetscScalar P[])
+{
+  SPNeoHookeanStress(dim, param[SP_A_LAMBDA], param[SP_A_MU], u_x, P);
+}
+
+void SPMaterialTangent_NeoHookean(PetscInt dim, const PetscReal param[], const PetscScalar u_x[], PetscScalar A[])
+{
+  SPNeoHookeanTangent(dim, param[SP_A_LAMBDA], param[SP_A_MU], u_x, A);
+}

@@ -112,3 +112,17 @@ test_finite_strain_mms() {
   fnd_levels_box 3 2; fnd_mms_case nh_mms_q1_3d 2 1.8 2.3 1 3 -material_model neo_hookean || rc=1
   return $rc
 }
+
+# The fast element operator of the Neo-Hookean law (stress/tangent at the quadrature points)
+# against PetscFE's residual and Jacobian at a random state (1e-12; fop_check of
+# 60-fast-operator.sh) on quads, triangles (1 and 2 ranks), hexes; and a whole finite-strain
+# contact run (the NH block, q/E = 0.5) with either operator: the same Newton and linear
+# iterations and figures (fop_same)
+test_finite_strain_fast_operator() {
+  local rc=0
+  fop_check_np12 -options_file input/block2d.opts -material_model neo_hookean || rc=1
+  fop_check_np12 -options_file input/hertz2d.opts -material_model neo_hookean || rc=1
+  fop_check 1 -options_file input/indent3d.opts -dm_plex_box_faces 6,6,6 -material_model neo_hookean || rc=1
+  fop_same 1 -options_file input/block2d.opts -material_model neo_hookean -bc_1_value 0.5 -load_steps 2 || rc=1
+  return $rc
+}
