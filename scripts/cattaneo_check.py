@@ -71,6 +71,6 @@ def main():
                centre_error_elements=0.5 * (left + right) / h, traction_l2_error=math.sqrt(num / den),
                stick_points=hi - lo + 1)
     for k, v in out.items():
-        print(k, "%.6g" % v if isinstance(v, float) else v)
+        print(k, "%.10g" % v if isinstance(v, float) else v)
 
 main()
