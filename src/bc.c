@@ -28,7 +28,7 @@ static PetscErrorCode BCSetFromOptions(MPI_Comm comm, PetscInt i, PetscInt dim, 
   PetscCall(PetscOptionsIntArray("-components", "Dirichlet: constrained displacement components (0..dim-1)", "SPBCSetFromOptions", bc->comps, &bc->ncomps, &set));
   if (!set) bc->ncomps = dim;
   PetscCall(PetscOptionsRealArray("-value", "Dirichlet: one displacement per component; traction: vector; pressure: value; force: total force vector (all at load factor 1)", "SPBCSetFromOptions", bc->value, &nval, &valueSet));
-  ngrad = dim;
+  ngrad = 3;
   PetscCall(PetscOptionsRealArray("-gradient", "Pressure: gradient g of a linearly varying pressure p(x) = value + g . x (at load factor 1)", "SPBCSetFromOptions", bc->gradient, &ngrad, &gradSet));
   nramp = 2;
   PetscCall(PetscOptionsRealArray("-ramp", "Load curve a,b: the condition is off up to load factor a, full from b, linear between (0,1: proportional to the load factor; e.g. a normal phase, then a tangential one)", "SPBCSetFromOptions", bc->ramp, &nramp, &rampSet));
@@ -38,7 +38,8 @@ static PetscErrorCode BCSetFromOptions(MPI_Comm comm, PetscInt i, PetscInt dim, 
     const PetscInt want = bc->type == SP_BC_DIRICHLET ? bc->ncomps : bc->type == SP_BC_PRESSURE ? 1 : dim;
     PetscCheck(!valueSet || nval == want, comm, PETSC_ERR_USER_INPUT, "-%svalue: %s needs %" PetscInt_FMT " value(s), got %" PetscInt_FMT, prefix, SPBCTypes[type], want, nval);
   }
-  PetscCheck(!gradSet || (bc->type == SP_BC_PRESSURE && ngrad == dim), comm, PETSC_ERR_USER_INPUT, "-%sgradient: a pressure condition takes %" PetscInt_FMT " gradient components", prefix, dim);
+  PetscCheck(!gradSet || bc->type == SP_BC_PRESSURE, comm, PETSC_ERR_USER_INPUT, "-%sgradient: only a pressure condition takes a gradient (this one is %s)", prefix, SPBCTypes[type]);
+  PetscCheck(!gradSet || ngrad == dim, comm, PETSC_ERR_USER_INPUT, "-%sgradient: give %" PetscInt_FMT " components (one per coordinate), got %" PetscInt_FMT, prefix, dim, ngrad);
   PetscCheck(!rampSet || (nramp == 2 && bc->ramp[0] >= 0.0 && bc->ramp[1] > bc->ramp[0] && bc->ramp[1] <= 1.0), comm, PETSC_ERR_USER_INPUT, "-%sramp: give two load factors 0 <= a < b <= 1", prefix);
   PetscCheck(bc->nvalues > 0, comm, PETSC_ERR_USER_INPUT, "-%svalues: give the label values of boundary condition %" PetscInt_FMT, prefix, i);
   for (PetscInt k = 0; k < bc->ncomps; ++k)

@@ -46,3 +46,10 @@ test_cattaneo2d_f5_unload_shifted() {
   assert_close tangential_force_zero "$(sval "$CASE_DIR/unload.txt" contact_force_x)" 0 0 1e-8 || rc=1
   return $rc
 }
+
+test_cattaneo2d_bad_input() {
+  bad_input_cases <<'CASES'
+gradient on a traction condition|input/cattaneo2d.opts|-bc_2_gradient 1,0
+gradient with the wrong number of components|input/cattaneo2d.opts|-bc_3_gradient 1,0,0
+CASES
+}
