@@ -169,6 +169,8 @@ typedef struct {
   PetscReal     us[3], um[3];  /* slave displacement and anchor (master) displacement at commit */
   PetscReal     n[3], T[2][3]; /* normal and tangent basis at commit (fixed in the step) */
   PetscReal     tT[2];         /* tangential traction at commit (penalty restarts from it) */
+  PetscBool     basisStale;    /* the basis of the converged step kept at commit (the committed state
+                                  stays in equilibrium); refreshed at the next solve's start */
 } SPPointState;
 typedef struct {
   PetscInt        vertex, sdof[3]; /* plex vertex; global dofs of its displacement (constrained < 0) */
