@@ -19,7 +19,8 @@ typedef struct {
   PetscReal load;     /* Dirichlet only: the load factor the bc function scales by (set on insert) */
   PetscReal ramp[2];  /* load curve: amplitude 0 up to load factor ramp[0], 1 from ramp[1], linear between */
   PetscInt  slot;     /* Neumann: constants[] slot; -1 for Dirichlet */
-  PetscReal base[4];  /* Neumann: [pressure, t_x, t_y, t_z] at amplitude 1 */
+  PetscReal gradient[3]; /* pressure: p(x) = value + gradient . x */
+  PetscReal base[7];  /* Neumann: [pressure, t_x, t_y, t_z, dp/dx, dp/dy, dp/dz] at amplitude 1 */
 } SPBC;
 
 /* A material law (the table in problem.c). Its parameters come from a material's (E, nu); the
@@ -177,6 +178,8 @@ typedef struct {
   PetscReal     us[3], um[3];  /* slave displacement and anchor (master) displacement at commit */
   PetscReal     n[3], T[2][3]; /* normal and tangent basis at commit (fixed in the step) */
   PetscReal     tT[2];         /* tangential traction at commit (penalty restarts from it) */
+  PetscBool     basisStale;    /* the basis of the converged step kept at commit (the committed state
+                                  stays in equilibrium); refreshed at the next solve's start */
 } SPPointState;
 typedef struct {
   PetscInt        vertex, sdof[3]; /* plex vertex; global dofs of its displacement (constrained < 0) */

@@ -8,7 +8,8 @@ const char *const SPBCTypes[] = {"dirichlet", "traction", "pressure", "force", "
 static PetscErrorCode BCSetFromOptions(MPI_Comm comm, PetscInt i, PetscInt dim, SPBC *bc)
 {
   char      prefix[32];
-  PetscInt  type = 0, nval = 3, nramp;
+  PetscInt  type = 0, nval = 3, nramp, ngrad;
+  PetscBool gradSet;
   PetscBool rampSet;
   PetscBool set, valueSet;
 
@@ -17,7 +18,7 @@ static PetscErrorCode BCSetFromOptions(MPI_Comm comm, PetscInt i, PetscInt dim, 
   PetscCall(PetscStrcpy(bc->label, "Face Sets"));
   bc->nvalues = SP_MAX_VALUES;
   bc->ncomps  = dim;
-  for (PetscInt d = 0; d < 3; ++d) bc->comps[d] = d, bc->value[d] = 0.0;
+  for (PetscInt d = 0; d < 3; ++d) bc->comps[d] = d, bc->value[d] = 0.0, bc->gradient[d] = 0.0;
   bc->ramp[0] = 0.0, bc->ramp[1] = 1.0, bc->slot = -1;
   PetscOptionsBegin(comm, prefix, "Boundary condition", "spcontact");
   PetscCall(PetscOptionsEList("-type", "Boundary condition type: dirichlet, traction, pressure, force (total force spread uniformly over the faces)", "SPBCSetFromOptions", SPBCTypes, 4, SPBCTypes[0], &type, NULL));
@@ -27,6 +28,8 @@ static PetscErrorCode BCSetFromOptions(MPI_Comm comm, PetscInt i, PetscInt dim, 
   PetscCall(PetscOptionsIntArray("-components", "Dirichlet: constrained displacement components (0..dim-1)", "SPBCSetFromOptions", bc->comps, &bc->ncomps, &set));
   if (!set) bc->ncomps = dim;
   PetscCall(PetscOptionsRealArray("-value", "Dirichlet: one displacement per component; traction: vector; pressure: value; force: total force vector (all at load factor 1)", "SPBCSetFromOptions", bc->value, &nval, &valueSet));
+  ngrad = 3;
+  PetscCall(PetscOptionsRealArray("-gradient", "Pressure: gradient g of a linearly varying pressure p(x) = value + g . x (at load factor 1)", "SPBCSetFromOptions", bc->gradient, &ngrad, &gradSet));
   nramp = 2;
   PetscCall(PetscOptionsRealArray("-ramp", "Load curve a,b: the condition is off up to load factor a, full from b, linear between (0,1: proportional to the load factor; e.g. a normal phase, then a tangential one)", "SPBCSetFromOptions", bc->ramp, &nramp, &rampSet));
   PetscOptionsEnd();
@@ -35,6 +38,8 @@ static PetscErrorCode BCSetFromOptions(MPI_Comm comm, PetscInt i, PetscInt dim, 
     const PetscInt want = bc->type == SP_BC_DIRICHLET ? bc->ncomps : bc->type == SP_BC_PRESSURE ? 1 : dim;
     PetscCheck(!valueSet || nval == want, comm, PETSC_ERR_USER_INPUT, "-%svalue: %s needs %" PetscInt_FMT " value(s), got %" PetscInt_FMT, prefix, SPBCTypes[type], want, nval);
   }
+  PetscCheck(!gradSet || bc->type == SP_BC_PRESSURE, comm, PETSC_ERR_USER_INPUT, "-%sgradient: only a pressure condition takes a gradient (this one is %s)", prefix, SPBCTypes[type]);
+  PetscCheck(!gradSet || ngrad == dim, comm, PETSC_ERR_USER_INPUT, "-%sgradient: give %" PetscInt_FMT " components (one per coordinate), got %" PetscInt_FMT, prefix, dim, ngrad);
   PetscCheck(!rampSet || (nramp == 2 && bc->ramp[0] >= 0.0 && bc->ramp[1] > bc->ramp[0] && bc->ramp[1] <= 1.0), comm, PETSC_ERR_USER_INPUT, "-%sramp: give two load factors 0 <= a < b <= 1", prefix);
   PetscCheck(bc->nvalues > 0, comm, PETSC_ERR_USER_INPUT, "-%svalues: give the label values of boundary condition %" PetscInt_FMT, prefix, i);
   for (PetscInt k = 0; k < bc->ncomps; ++k)
@@ -99,7 +104,7 @@ void SPBCSetLoad(PetscInt nbc, const SPBC bc[], PetscReal load, PetscScalar cons
   for (PetscInt i = 0; i < nbc; ++i) {
     const PetscReal a = Amplitude(&bc[i], load);
     if (bc[i].slot < 0) continue;
-    for (PetscInt k = 0; k < 4; ++k) constants[SP_C_BC0 + 4 * bc[i].slot + k] = a * bc[i].base[k];
+    for (PetscInt k = 0; k < SP_C_BCW; ++k) constants[SP_C_BC0 + SP_C_BCW * bc[i].slot + k] = a * bc[i].base[k];
   }
 }
 
@@ -136,6 +141,7 @@ PetscErrorCode SPBCAddToDS(DM dm, PetscInt nbc, SPBC bc[], PetscScalar constants
       bc[i].slot    = slot;
       bc[i].base[0] = bc[i].type == SP_BC_PRESSURE ? bc[i].value[0] : 0.0;
       for (PetscInt d = 0; d < 3; ++d) bc[i].base[1 + d] = d < dim && bc[i].type != SP_BC_PRESSURE ? scale * bc[i].value[d] : 0.0;
+      for (PetscInt d = 0; d < 3; ++d) bc[i].base[4 + d] = bc[i].type == SP_BC_PRESSURE ? bc[i].gradient[d] : 0.0;
       slot++;
     }
   }

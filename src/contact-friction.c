@@ -218,14 +218,20 @@ PetscErrorCode SPFrictionAddJacobian(SPContact c, Mat J)
 }
 
 /* Anchor point i at the evaluated state (its current closest point) with committed traction tg
-   (a dim-vector; NULL: none): the new basis, displacements, s_T = -t_T/eps_T, Dg_T = 0 */
-static void AnchorPoint(SPContact c, PetscInt i, const PetscReal tg[])
+   (a dim-vector; NULL: none): displacements, s_T = -t_T/eps_T, Dg_T = 0, and the basis of the
+   current geometry, or, with `keep` on a point anchored before, the basis of the converged step:
+   the committed traction then has no component along the new normal, so the committed state (its
+   recovered forces, the summary) stays in equilibrium; SPFrictionRefreshBasis turns it to the
+   current geometry at the start of the next solve. */
+static void AnchorPoint(SPContact c, PetscInt i, const PetscReal tg[], PetscBool keep)
 {
   SPContactPoint *pt = &c->pt[i];
   SPPointState   *st = &pt->st;
   const PetscInt  dim = c->dim, e = pt->geo.elem;
 
-  st->anchored = e != SP_ELEM_NONE ? PETSC_TRUE : PETSC_FALSE;
+  keep           = keep && st->anchored ? PETSC_TRUE : PETSC_FALSE;
+  st->basisStale = PETSC_FALSE;
+  st->anchored   = e != SP_ELEM_NONE ? PETSC_TRUE : PETSC_FALSE;
   st->flips    = 0;
   st->tT[0] = st->tT[1] = st->sT[0] = st->sT[1] = 0.0;
   pt->geo.dgT[0] = pt->geo.dgT[1] = 0.0;
@@ -235,15 +241,41 @@ static void AnchorPoint(SPContact c, PetscInt i, const PetscReal tg[])
   st->anchorXi[0] = pt->geo.xi[0], st->anchorXi[1] = pt->geo.xi[1];
   for (PetscInt d = 0; d < 3; ++d) {
     st->us[d] = d < dim ? pt->geo.x[d] - pt->X[d] : 0.0;
-    st->n[d]  = pt->geo.normal[d];
+    if (keep) continue;
+    st->n[d] = pt->geo.normal[d];
     for (PetscInt a = 0; a < 2; ++a) st->T[a][d] = pt->geo.tangent[a][d];
   }
+  st->basisStale = keep;
   (void)AnchorDisplacement(c, i, st->um); /* the current element's facet: always held */
   if (tg)
     for (PetscInt a = 0; a < dim - 1; ++a) {
       st->tT[a] = SPDot(dim, tg, st->T[a]);
       st->sT[a] = -st->tT[a] / pt->epsT;
     }
+}
+
+/* Start of a solve: the basis kept at commit turns to the current geometry's; the committed
+   traction and the last slip direction are expressed in it (s_T = -t_T/eps_T, Dg_T = 0 still) */
+static void RefreshBasis(SPContact c, PetscInt i)
+{
+  SPContactPoint *pt = &c->pt[i];
+  SPPointState   *st = &pt->st;
+  const PetscInt  dim = c->dim, nt = dim - 1;
+  PetscReal       dir[3] = {0, 0, 0};
+
+  st->basisStale = PETSC_FALSE;
+  if (pt->geo.elem == SP_ELEM_NONE) return;
+  for (PetscInt a = 0; a < nt; ++a)
+    for (PetscInt d = 0; d < dim; ++d) dir[d] += st->dir[a] * st->T[a][d];
+  for (PetscInt d = 0; d < 3; ++d) {
+    st->n[d] = pt->geo.normal[d];
+    for (PetscInt a = 0; a < 2; ++a) st->T[a][d] = pt->geo.tangent[a][d];
+  }
+  for (PetscInt a = 0; a < nt; ++a) {
+    st->tT[a]  = SPDot(dim, st->tCommit, st->T[a]);
+    st->sT[a]  = -st->tT[a] / pt->epsT;
+    st->dir[a] = SPDot(dim, dir, st->T[a]);
+  }
 }
 
 /* Anchor the points that have no anchor yet (start of a solve), or, with `commit`, every point at a
@@ -259,7 +291,8 @@ PetscErrorCode SPFrictionAnchor(SPContact c, PetscBool commit)
     PetscReal       y[2], t[2], tg[3] = {0, 0, 0}, dg[3] = {0, 0, 0};
     PetscBool       stick;
     if (!commit) {
-      if (!pt->st.anchored) AnchorPoint(c, i, NULL);
+      if (!pt->st.anchored) AnchorPoint(c, i, NULL, PETSC_FALSE);
+      else if (pt->st.basisStale) RefreshBasis(c, i);
       continue;
     }
     SPFrictionTraction(c, i, y, t, &stick);
@@ -271,7 +304,7 @@ PetscErrorCode SPFrictionAnchor(SPContact c, PetscBool commit)
     else
       for (PetscInt d = 0; d < dim; ++d) pt->st.creep[d] = 0.0;
     for (PetscInt d = 0; d < dim; ++d) pt->st.tCommit[d] = tg[d];
-    AnchorPoint(c, i, tg);
+    AnchorPoint(c, i, tg, PETSC_TRUE);
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -11,8 +11,9 @@ enum {
   SP_C_MU,         /* shear modulus */
   SP_C_LOAD,       /* load factor (the Neumann slots hold loads already scaled by it) */
   SP_C_MMS,        /* amplitude of the manufactured solution (0: off) */
-  SP_C_BC0,        /* Neumann slot k: [pressure, t_x, t_y, t_z] at SP_C_BC0 + 4k */
-  SP_C_NUM = SP_C_BC0 + 4 * 8
+  SP_C_BC0,        /* Neumann slot k: [pressure, t_x, t_y, t_z, dp/dx, dp/dy, dp/dz] at SP_C_BC0 + SP_C_BCW k */
+  SP_C_BCW = 7,    /* width of a Neumann slot */
+  SP_C_NUM = SP_C_BC0 + SP_C_BCW * 8
 };
 
 /* Components of the auxiliary cell field (region materials): the law's per-cell parameters */
@@ -126,19 +127,21 @@ static inline void SPElasticF0MMS(SP_KERNEL_ARGS, const PetscReal x[], PetscInt 
   }
 }
 
-/* Neumann load on slot k: traction t and pressure p (compressive, along -n), already scaled by
-   the condition's load curve (SPBCSetLoad). Residual term -int v.t_total with t_total = t - p n,
-   so f0 = p n - t. */
-static inline void SPNeumann(PetscInt k, PetscInt dim, const PetscReal n[], const PetscScalar constants[], PetscScalar f0[])
+/* Neumann load on slot k: traction t and pressure p(x) = p0 + grad p . x (compressive, along -n),
+   already scaled by the condition's load curve (SPBCSetLoad). Residual term -int v.t_total with
+   t_total = t - p n, so f0 = p n - t. */
+static inline void SPNeumann(PetscInt k, PetscInt dim, const PetscReal x[], const PetscReal n[], const PetscScalar constants[], PetscScalar f0[])
 {
-  const PetscScalar *c = &constants[SP_C_BC0 + 4 * k];
-  for (PetscInt d = 0; d < dim; ++d) f0[d] = c[0] * n[d] - c[1 + d];
+  const PetscScalar *c = &constants[SP_C_BC0 + SP_C_BCW * k];
+  PetscScalar        p = c[0];
+  for (PetscInt d = 0; d < dim; ++d) p += c[4 + d] * x[d];
+  for (PetscInt d = 0; d < dim; ++d) f0[d] = p * n[d] - c[1 + d];
 }
 
 #define SP_NEUMANN_KERNEL(k) \
   static inline void SPNeumannF0_##k(SP_KERNEL_ARGS, const PetscReal x[], const PetscReal n[], PetscInt numConstants, const PetscScalar constants[], PetscScalar f0[]) \
   { \
-    SPNeumann(k, dim, n, constants, f0); \
+    SPNeumann(k, dim, x, n, constants, f0); \
   }
 SP_NEUMANN_KERNEL(0)
 SP_NEUMANN_KERNEL(1)
