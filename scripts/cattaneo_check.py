@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """F2/F5 checker (friction.md): stick zone and shear traction of a 2D Cattaneo-Mindlin run.
 
-Usage: cattaneo_check.py CONTACT_CSV MODE [Qstar_ratio]
+Usage: cattaneo_check.py CONTACT_CSV MODE [Q_ratio [P]]   (P: the normal force, default 0.01;
+       give the measured P and Q/(mu P) for a displacement-controlled run)
   MODE cm:   loading to Q = Q_ratio mu P (default 0.5): c = b sqrt(1 - Q/(mu P)),
              q(x) = mu p0 sqrt(1-x^2/b^2) - mu p0 (c/b) sqrt(1-x^2/c^2) [|x| < c]
   MODE unload: Q* = Q_ratio mu P, then back to Q = 0: d = b sqrt(1 - Q*/(2 mu P)),
@@ -15,15 +16,16 @@ upper body, so the sign is flipped), compared on the points with pressure, L2 re
 exact profile (trapezoid rule over the slave points)."""
 import csv, math, sys
 
-E, nu, mu, P, R = 1.0, 0.3, 0.3, 0.01, 1.0
+E, nu, mu, R = 1.0, 0.3, 0.3, 1.0
 Es = E / (2 * (1 - nu * nu))          # two identical bodies
 Rs = R / 2
-b = math.sqrt(4 * P * Rs / (math.pi * Es))
-p0 = 2 * P / (math.pi * b)
 
 def main():
     path, mode = sys.argv[1], sys.argv[2]
     ratio = float(sys.argv[3]) if len(sys.argv) > 3 else 0.5
+    P = float(sys.argv[4]) if len(sys.argv) > 4 else 0.01
+    b = math.sqrt(4 * P * Rs / (math.pi * Es))
+    p0 = 2 * P / (math.pi * b)
     rows = [r for r in csv.DictReader(open(path)) if float(r["y"]) < 0.05 and float(r["y"]) >= -1e-12]
     rows.sort(key=lambda r: float(r["x"]))
     x = [float(r["x"]) for r in rows]
