@@ -2,7 +2,9 @@
    and obstacle motion; shifts carry over. Inside a step, methods that update their shifts after a
    converged solve (augmented Lagrangian) repeat the solve until their update is done or its budget
    is spent. A step that fails either way is halved (bounded), then the run stops with a clear
-   message; converged steps keep their output. */
+   message; converged steps keep their output. After every written step the restart data goes into
+   the h5 and a pending SIGTERM/SIGINT (signals.c) stops the run there, on every rank. A restarted
+   run (-restart) starts from the step, load factor and increment SPRestartLoad restored. */
 #include <spcontact-impl.h>
 
 static PetscErrorCode SolveStep(SPApp app, PetscReal load, PetscInt step, Vec ubackup, PetscBool *ok)
@@ -42,6 +44,7 @@ PetscErrorCode SPLoadingRun(SPApp app)
   PetscFunctionBeginUser;
   PetscCall(VecDuplicate(app->u, &ubackup));
   app->converged = PETSC_TRUE;
+  if (app->restartFile[0]) done = app->loadReached, inc = app->loadInc, step = app->stepsDone; /* SPRestartLoad */
   while (done < 1.0 - 1e-12) {
     PetscReal load = PetscMin(1.0, done + inc);
     PetscBool ok = PETSC_FALSE;
@@ -66,6 +69,17 @@ PetscErrorCode SPLoadingRun(SPApp app)
     PetscCall(SPOutputWriteStep(app->output, app->problem, app->u, app->contact));
     PetscCall(PetscLogStagePop());
     PetscCall(SPContactReportStep(app->contact, app->u, step, load));
+    app->stepsDone = step, app->loadReached = done;
+    PetscCall(SPRestartWriteStep(app, inc));
+    PetscCall(SPSignalsPending(app->comm, &app->signals, step, &app->interrupted));
+    if (app->interrupted && done < 1.0 - 1e-12) { /* a signal after the last step: the run is complete */
+      const char *prefix;
+      app->converged = PETSC_FALSE;
+      PetscCall(SPOutputGetPrefix(app->output, &prefix));
+      PetscCall(PetscPrintf(app->comm, "spcontact: interrupted by signal %d after load step %" PetscInt_FMT " (load factor %g); restart with -restart %s.h5.part\n", app->interrupted, step, (double)done, prefix));
+      break;
+    }
+    app->interrupted = 0;
   }
   app->stepsDone   = step;
   app->loadReached = done;
