@@ -54,7 +54,8 @@ rs_case() {
 test_restart_b2_shifted()         { rs_case 1 -options_file input/hertz2d.opts -contact_method shifted; }
 test_restart_b2_shifted_np2()     { rs_case 2 -options_file input/hertz2d.opts -contact_method shifted; }
 test_restart_friction_alm()       { rs_case 1 -options_file input/friction_block2d.opts -contact_method alm; }
-test_restart_friction_shifted_np2() { rs_case 2 -options_file input/friction_block2d.opts -contact_method shifted; }
+# F1b full slip: slipping points with moving anchors and tangential shifts
+test_restart_friction_slide_shifted_np2() { rs_case 2 -options_file input/friction_slide2d.opts -contact_method shifted; }
 
 # A real SIGTERM from outside (1 rank, no launcher): the run stops after the step it is in,
 # exit 143, the file says interrupted and holds that many readable steps
