@@ -57,24 +57,40 @@ test_restart_friction_alm()       { rs_case 1 -options_file input/friction_block
 # F1b full slip: slipping points with moving anchors and tangential shifts
 test_restart_friction_slide_shifted_np2() { rs_case 2 -options_file input/friction_slide2d.opts -contact_method shifted; }
 
-# A real SIGTERM from outside (1 rank, no launcher): the run stops after the step it is in,
-# exit 143, the file says interrupted and holds that many readable steps
-test_restart_kill_term() {
-  local rc=0 pid code n
-  RERUN="$SPC -options_file input/hertz2d.opts -load_steps 10 -contact_monitor -output_dir $CASE_DIR -output_name k & kill -TERM \$!"
+# rs_kill SIG CODE: a real signal from outside (1 rank, no launcher): the run stops after the step
+# it is in, exits with CODE (128 + signal), the file says interrupted and holds that many steps
+rs_kill() {
+  local sig=$1 want=$2 rc=0 pid code n
+  RERUN="$SPC -options_file input/hertz2d.opts -load_steps 10 -contact_monitor -output_dir $CASE_DIR -output_name k & kill -$sig \$!"
   $SPC -options_file input/hertz2d.opts -load_steps 10 -contact_monitor -output_dir "$CASE_DIR" -output_name k >"$CASE_DIR/k.txt" 2>&1 &
   pid=$!
   for _ in $(seq 1 1200); do # until step 2 has started (its first Newton line), at most 120 s
     n=$(grep -c "contact   0 " "$CASE_DIR/k.txt"); [ "$n" -ge 2 ] && break; sleep 0.1
   done
-  kill -TERM "$pid"; wait "$pid"; code=$?
-  assert_eq "exit code after SIGTERM" "$code" 143 || rc=1
+  kill -"$sig" "$pid"; wait "$pid"; code=$?
+  assert_eq "exit code after SIG$sig" "$code" "$want" || rc=1
   local st; st=$(rs_h5 "$CASE_DIR/k.h5.part") || rc=1
   assert_eq "status" "${st%% *}" interrupted || rc=1
   n=$(echo "$st" | cut -d' ' -f2)
   assert_ge "converged steps kept" "$n" 2 || rc=1
   assert_le "stopped early" "$n" 9 || rc=1
   assert_eq "readable steps in the h5 = last_step" "$("$PYTHON" -c "import h5py; print(h5py.File('$CASE_DIR/k.h5.part','r')['/vertex_fields/displacement_Field_0'].shape[0])")" "$n" || rc=1
+  return $rc
+}
+
+test_restart_kill_term() { rs_kill TERM 143; }
+test_restart_kill_int()  { rs_kill INT 130; }
+
+# Final names all or none: the h5's final name is taken by a directory, so its rename fails; the
+# renames before it (csv, contact csv, xmf) are undone, one error line, exit 1
+test_restart_rename_all_or_none() {
+  local rc=0 code
+  mkdir -p "$CASE_DIR/d.h5"
+  RERUN="mkdir $CASE_DIR/d.h5; $SPC -options_file input/hertz2d.opts -output_dir $CASE_DIR -output_name d"
+  $SPC -options_file input/hertz2d.opts -output_dir "$CASE_DIR" -output_name d >"$CASE_DIR/o.txt" 2>"$CASE_DIR/e.txt"; code=$?
+  assert_eq "exit code" "$code" 1 || rc=1
+  assert_eq "stderr" "$(cat "$CASE_DIR/e.txt")" "spcontact: error: cannot rename $CASE_DIR/d.h5.part to $CASE_DIR/d.h5 (Is a directory); the complete results stay under their .part names" || rc=1
+  assert_eq "files" "$(cd "$CASE_DIR" && ls -d d.* d_* | tr '\n' ' ')" "d.csv.part d.h5 d.h5.part d.xmf.part d_contact.csv.part " || rc=1
   return $rc
 }
 
