@@ -7,7 +7,8 @@
    centre). Attributes of /restart name the run (dimension, dofs, contact points, ranks, method,
    friction, load steps) and the number of steps stored. The vectors are in the partition's order:
    a restart needs the same mesh, options and rank count (checked, one line each).
-   -restart <file.h5> loads the last stored step before the output files are opened. */
+   -restart <file.h5> loads the last stored step before the output files are opened; the restarted
+   run's file holds the steps after it (root attributes first_step, restarted_from). */
 #include <spcontact-impl.h>
 #include <petscviewerhdf5.h>
 #include <hdf5.h>
@@ -116,10 +117,13 @@ PetscErrorCode SPRestartWriteStep(SPApp a, PetscReal inc)
   PetscCall(VecView(v, o->h5));
   PetscCall(VecDestroy(&v));
   PetscCall(PetscViewerHDF5PopGroup(o->h5));
-  if (steps == 1 || a->restartFile[0]) {
+  if (steps == 1) { /* a restarted run's file starts after the restored step: say where from */
     Identity id;
+    PetscInt first = a->stepsDone;
     PetscCall(GetIdentity(a, &id));
     PetscCall(WriteIdentity(o->h5, &id));
+    PetscCall(PetscViewerHDF5WriteAttribute(o->h5, "/", "first_step", PETSC_INT, &first));
+    if (a->restartFile[0]) PetscCall(PetscViewerHDF5WriteAttribute(o->h5, "/", "restarted_from", PETSC_STRING, a->restartFile));
   }
   PetscCall(PetscViewerHDF5WriteAttribute(o->h5, "/restart", "steps", PETSC_INT, &steps));
   PetscCall(PetscViewerHDF5GetFileId(o->h5, &fid));

@@ -42,6 +42,7 @@ rs_case() {
   assert_eq "complete file: status, last step, load factor" "$(rs_h5 "$CASE_DIR/full.h5" | cut -d' ' -f1-2)" "complete 10" || rc=1
   spc "$CASE_DIR/rest.txt" "$np" "${o[@]}" -output_name rest -restart "$CASE_DIR/half.h5.part" || return 1
   assert_eq "restarted run status" "$(sval "$CASE_DIR/rest.txt" status) $(rs_h5 "$CASE_DIR/rest.h5" | cut -d' ' -f1-2)" "complete complete 10" || rc=1
+  assert_eq "restarted file: first step, slabs" "$("$PYTHON" -c "import h5py; f = h5py.File('$CASE_DIR/rest.h5', 'r'); print(f.attrs['first_step'], f['/vertex_fields/displacement_Field_0'].shape[0])")" "6 5" || rc=1
   same_summary "$CASE_DIR/full.txt" "$CASE_DIR/rest.txt" 1e-10 load_factor load_steps newton_iterations displacement_max \
     contact_active_points contact_max_penetration contact_gap_error contact_force_x contact_force_y contact_peak_pressure contact_radius || rc=1
   if [ "$(sval "$CASE_DIR/full.txt" contact_friction)" = yes ]; then
