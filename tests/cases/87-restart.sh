@@ -126,3 +126,6 @@ EOF
   assert_eq "no x.* output written" "$(ls "$CASE_DIR" | grep -c '^x[._]')" 0 || rc=1
   return $rc
 }
+
+# 3 ranks (the partition cuts the contact surface of the sliding block)
+test_restart_friction_slide_shifted_np3() { rs_case 3 -options_file input/friction_slide2d.opts -contact_method shifted; }
