@@ -35,10 +35,29 @@ static PetscErrorCode SolveStep(SPApp app, PetscReal load, PetscInt step, Vec ub
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The safe point after a written step: a SIGTERM/SIGINT caught on any rank stops the run on every
+   rank, unless the load is complete (then the run ends normally) */
+static PetscErrorCode Interrupted(SPApp app, PetscBool *stop)
+{
+  const char *prefix;
+
+  PetscFunctionBeginUser;
+  PetscCall(SPSignalsPending(app->comm, &app->signals, app->stepsDone, &app->interrupted));
+  if (app->loadReached >= 1.0 - 1e-12) app->interrupted = 0;
+  *stop = app->interrupted ? PETSC_TRUE : PETSC_FALSE;
+  if (!*stop) PetscFunctionReturn(PETSC_SUCCESS);
+  app->converged = PETSC_FALSE;
+  PetscCall(SPOutputGetPrefix(app->output, &prefix));
+  if (app->output->enabled) PetscCall(PetscPrintf(app->comm, "spcontact: interrupted by signal %d after load step %" PetscInt_FMT " (load factor %g); restart with -restart %s.h5.part\n", app->interrupted, app->stepsDone, (double)app->loadReached, prefix));
+  else PetscCall(PetscPrintf(app->comm, "spcontact: interrupted by signal %d after load step %" PetscInt_FMT " (load factor %g); no restart data (-output_fields false)\n", app->interrupted, app->stepsDone, (double)app->loadReached));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode SPLoadingRun(SPApp app)
 {
   PetscReal done = 0.0, inc = 1.0 / app->loadSteps;
   PetscInt  step = 0, cuts = 0;
+  PetscBool halt;
   Vec       ubackup;
 
   PetscFunctionBeginUser;
@@ -71,15 +90,8 @@ PetscErrorCode SPLoadingRun(SPApp app)
     PetscCall(SPContactReportStep(app->contact, app->u, step, load));
     app->stepsDone = step, app->loadReached = done;
     PetscCall(SPRestartWriteStep(app, inc));
-    PetscCall(SPSignalsPending(app->comm, &app->signals, step, &app->interrupted));
-    if (app->interrupted && done < 1.0 - 1e-12) { /* a signal after the last step: the run is complete */
-      const char *prefix;
-      app->converged = PETSC_FALSE;
-      PetscCall(SPOutputGetPrefix(app->output, &prefix));
-      PetscCall(PetscPrintf(app->comm, "spcontact: interrupted by signal %d after load step %" PetscInt_FMT " (load factor %g); restart with -restart %s.h5.part\n", app->interrupted, step, (double)done, prefix));
-      break;
-    }
-    app->interrupted = 0;
+    PetscCall(Interrupted(app, &halt));
+    if (halt) break;
   }
   app->stepsDone   = step;
   app->loadReached = done;
