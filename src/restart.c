@@ -143,10 +143,14 @@ static PetscErrorCode CheckFile(SPApp a)
     FILE *fp = fopen(a->restartFile, "r");
     if (!fp) why = 1;
     else {
-      hid_t f;
+      hid_t        f;
+      H5E_auto2_t  func;
+      void        *data;
       fclose(fp);
+      H5Eget_auto2(H5E_DEFAULT, &func, &data);
       H5Eset_auto2(H5E_DEFAULT, NULL, NULL); /* a failed open is reported below, in one line */
       f = H5Fopen(a->restartFile, H5F_ACC_RDONLY, H5P_DEFAULT);
+      H5Eset_auto2(H5E_DEFAULT, func, data);
       if (f < 0) why = 2;
       else H5Fclose(f);
     }
