@@ -9,12 +9,13 @@ endif
 PETSC_CFLAGS = $(shell pkg-config --cflags PETSc 2>/dev/null)
 PETSC_LIBS   = $(shell pkg-config --libs PETSc 2>/dev/null)
 HDF5_CFLAGS  = $(shell pkg-config --cflags hdf5-openmpi 2>/dev/null)
+HDF5_LIBS    = $(shell pkg-config --libs hdf5-openmpi 2>/dev/null)
 
 CC       = mpicc
 CFLAGS  ?= -O2 -g
 CFLAGS  += -std=c99 -Wall -Wextra -Wno-unused-parameter -MMD -MP
 CPPFLAGS = -Iinclude $(PETSC_CFLAGS) $(HDF5_CFLAGS)
-LDLIBS   = $(PETSC_LIBS) -lmetis -lm
+LDLIBS   = $(PETSC_LIBS) $(HDF5_LIBS) -lmetis -lm
 
 SRC  := $(wildcard src/*.c src/materials/*.c src/methods/*.c)
 OBJ  := $(SRC:%.c=build/%.o)

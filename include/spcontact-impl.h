@@ -296,7 +296,7 @@ PETSC_EXTERN PetscErrorCode SPContactPairsExchange(SPContact, const PetscScalar[
 PETSC_EXTERN PetscErrorCode SPContactPairsProject(SPContact, PetscInt, PetscInt *, PetscReal *, PetscReal *, PetscReal[]);
 PETSC_EXTERN PetscErrorCode SPContactPairsDestroy(SPContact);
 PETSC_EXTERN PetscBool      SPContactGeometricTangent(SPContact);
-PETSC_EXTERN PetscErrorCode SPOutputWriteXdmf(SPOutput);
+PETSC_EXTERN PetscErrorCode SPOutputWriteXdmf(SPOutput, PetscBool);
 
 /* fast-elastic.c: element-level isotropic linear elasticity on first-order cells */
 struct _n_SPFastElastic {
@@ -342,7 +342,25 @@ struct _n_SPOutput {
   PetscReal   times[1024];
   PetscBool   contactFields;
   PetscBool   frictionFields; /* tangential_traction, slip, status (runs with friction) */
+  PetscBool   pointsFile;     /* the contact-points CSV was written (renamed with the others) */
 };
+
+/* signals.c: SIGTERM/SIGINT recorded by a handler, acted on at the load-step loop's safe point */
+typedef struct {
+  void (*oldTerm)(int), (*oldInt)(int); /* the handlers replaced (restored at the end) */
+  PetscBool installed;
+  PetscInt  debugStep; /* -debug_interrupt_after_step: rank 0 raises SIGTERM after this step (tests) */
+} SPSignals;
+PETSC_EXTERN PetscErrorCode SPSignalsInstall(SPSignals *);
+PETSC_EXTERN PetscErrorCode SPSignalsRestore(SPSignals *);
+PETSC_EXTERN PetscErrorCode SPSignalsPending(MPI_Comm, SPSignals *, PetscInt, int *);
+
+/* restart.c: the state of every converged step in the h5 (/restart), and a run resumed from it */
+#define SP_POINT_NPACK 44 /* reals per contact point in /restart/points (contact-point.c) */
+PETSC_EXTERN PetscErrorCode SPContactPackPoints(SPContact, PetscReal[]);
+PETSC_EXTERN PetscErrorCode SPContactUnpackPoints(SPContact, const PetscReal[], PetscBool *);
+PETSC_EXTERN PetscErrorCode SPRestartWriteStep(SPApp, PetscReal);
+PETSC_EXTERN PetscErrorCode SPRestartLoad(SPApp);
 
 struct _n_SPApp {
   MPI_Comm  comm;
@@ -357,6 +375,10 @@ struct _n_SPApp {
   PetscBool converged;
   PetscReal loadReached;
   PetscLogDouble t0;
+  SPSignals signals;
+  int       interrupted;   /* the signal that stopped the run (0: none) */
+  char      restartFile[PETSC_MAX_PATH_LEN]; /* -restart: resume from this h5 ("" : from the start) */
+  PetscReal loadInc;       /* restart: the load increment to go on with (0: 1/loadSteps) */
 };
 
 #endif

@@ -122,14 +122,15 @@ PETSC_EXTERN PetscErrorCode SPOutputSetFromOptions(SPOutput);
 PETSC_EXTERN PetscErrorCode SPOutputOpen(SPOutput);
 PETSC_EXTERN PetscErrorCode SPOutputWriteStep(SPOutput, SPProblem, Vec, SPContact);
 PETSC_EXTERN PetscErrorCode SPOutputGetHistoryFile(SPOutput, FILE **);
-PETSC_EXTERN PetscErrorCode SPOutputClose(SPOutput, SPContact, PetscBool);
+PETSC_EXTERN PetscErrorCode SPOutputClose(SPOutput, const char[], PetscInt, PetscReal);
+PETSC_EXTERN PetscErrorCode SPOutputGetPointsFile(SPOutput, char[], size_t);
 PETSC_EXTERN PetscErrorCode SPOutputGetPrefix(SPOutput, const char **);
 PETSC_EXTERN PetscErrorCode SPOutputDestroy(SPOutput *);
 
 /* app.c */
 PETSC_EXTERN PetscErrorCode SPAppCreate(MPI_Comm, SPApp *);
 PETSC_EXTERN PetscErrorCode SPAppSetUp(SPApp);
-PETSC_EXTERN PetscErrorCode SPAppRun(SPApp, PetscBool *);
+PETSC_EXTERN PetscErrorCode SPAppRun(SPApp, PetscBool *, int *);
 PETSC_EXTERN PetscErrorCode SPAppSummary(SPApp);
 PETSC_EXTERN PetscErrorCode SPAppDestroy(SPApp *);
 

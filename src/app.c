@@ -21,6 +21,8 @@ static PetscErrorCode LoadingSetFromOptions(SPApp a)
   PetscFunctionBeginUser;
   PetscOptionsBegin(a->comm, NULL, "Loading options", "spcontact");
   PetscCall(PetscOptionsInt("-load_steps", "Number of load steps (load factor k/N scales loads, Dirichlet values, obstacle motion)", "SPAppSetUp", a->loadSteps, &a->loadSteps, NULL));
+  PetscCall(PetscOptionsString("-restart", "Resume a load-stepped run from the last converged step stored in this .h5 (or .h5.part) file of an interrupted or failed run (same mesh, options and rank count)", "SPAppSetUp", a->restartFile, a->restartFile, sizeof(a->restartFile), NULL));
+  PetscCall(PetscOptionsInt("-debug_interrupt_after_step", "Testing: rank 0 raises SIGTERM after this converged load step (0: never)", "SPAppSetUp", a->signals.debugStep, &a->signals.debugStep, NULL));
   PetscCall(PetscOptionsInt("-load_max_cutbacks", "Times a failing load increment is halved before the run stops", "SPAppSetUp", a->maxCutbacks, &a->maxCutbacks, NULL));
   PetscOptionsEnd();
   PetscCheck(a->loadSteps >= 1, a->comm, PETSC_ERR_USER_INPUT, "-load_steps %" PetscInt_FMT ": need at least one load step", a->loadSteps);
@@ -49,31 +51,40 @@ PetscErrorCode SPAppSetUp(SPApp a)
   PetscCall(DMCreateGlobalVector(a->dm, &a->u));
   PetscCall(PetscObjectSetName((PetscObject)a->u, "displacement"));
   PetscCall(VecSet(a->u, 0.0));
+  PetscCall(SPRestartLoad(a)); /* before the output files (re)open */
   PetscCall(SPOutputOpen(a->output));
   PetscCall(PetscLogStagePop());
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode SPAppRun(SPApp a, PetscBool *converged)
+/* The run's status for the h5 and the exit code */
+static const char *RunStatus(SPApp a)
+{
+  if (a->interrupted) return "interrupted";
+  return a->converged ? "complete" : "failed";
+}
+
+PetscErrorCode SPAppRun(SPApp a, PetscBool *converged, int *interrupted)
 {
   PetscBool on;
 
   PetscFunctionBeginUser;
+  PetscCall(SPSignalsInstall(&a->signals));
   PetscCall(PetscLogStagePush(a->log.solve));
   PetscCall(SPLoadingRun(a));
   PetscCall(PetscLogStagePop());
   PetscCall(PetscLogStagePush(a->log.output));
   PetscCall(SPContactIsActive(a->contact, &on));
   if (on) {
-    const char *prefix;
-    char        file[PETSC_MAX_PATH_LEN + 16];
-    PetscCall(SPOutputGetPrefix(a->output, &prefix));
-    PetscCall(PetscSNPrintf(file, sizeof(file), "%s_contact.csv", prefix));
+    char file[PETSC_MAX_PATH_LEN + 32];
+    PetscCall(SPOutputGetPointsFile(a->output, file, sizeof(file)));
     PetscCall(SPContactWritePoints(a->contact, a->u, file));
   }
-  PetscCall(SPOutputClose(a->output, a->contact, a->converged));
+  PetscCall(SPOutputClose(a->output, RunStatus(a), a->stepsDone, a->loadReached));
   PetscCall(PetscLogStagePop());
-  *converged = a->converged;
+  PetscCall(SPSignalsRestore(&a->signals));
+  *converged   = a->converged;
+  *interrupted = a->interrupted;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -138,6 +149,7 @@ PetscErrorCode SPAppSummary(SPApp a)
   PetscCall(PetscTime(&t1));
   PetscCall(PetscViewerASCIIPrintf(v, "=== spcontact summary ===\n"));
   PetscCall(MeshSummary(a, v));
+  PetscCall(PetscViewerASCIIPrintf(v, "status %s\n", RunStatus(a)));
   PetscCall(PetscViewerASCIIPrintf(v, "converged %s\nload_steps %" PetscInt_FMT "\ncutbacks %" PetscInt_FMT "\nload_factor %g\n", a->converged ? "yes" : "no", a->stepsDone, a->cutbacks, (double)a->loadReached));
   PetscCall(PetscViewerASCIIPrintf(v, "newton_iterations %" PetscInt_FMT "\nlinear_iterations %" PetscInt_FMT "\nfunction_evaluations %" PetscInt_FMT "\n", newton, linear, functions));
   PetscCall(SPSolverGetBulkOperator(a->solver, &bulk));
@@ -163,6 +175,7 @@ PetscErrorCode SPAppDestroy(SPApp *app)
 
   PetscFunctionBeginUser;
   if (!a) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(SPSignalsRestore(&a->signals));
   PetscCall(VecDestroy(&a->u));
   PetscCall(SPSolverDestroy(&a->solver));
   PetscCall(SPOutputDestroy(&a->output));

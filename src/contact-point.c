@@ -278,3 +278,74 @@ PetscErrorCode SPContactRestoreState(SPContact c)
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
+
+/* Restart: every point's state as SP_POINT_NPACK reals (reference position, first gap, then the
+   state record), one field list for both directions */
+static void Reals(PetscBool pack, PetscReal v[], PetscInt n, PetscReal b[], PetscInt *k)
+{
+  for (PetscInt j = 0; j < n; ++j, ++*k) {
+    if (pack) b[*k] = v[j];
+    else v[j] = b[*k];
+  }
+}
+
+static PetscInt PointState(PetscBool pack, SPContactPoint *p, PetscReal b[])
+{
+  SPPointState *st = &p->st;
+  PetscReal     e[6] = {(PetscReal)st->status, (PetscReal)st->active, (PetscReal)st->inactiveCount, (PetscReal)st->flips, (PetscReal)st->reversed, (PetscReal)st->anchored};
+  PetscReal     anchor = (PetscReal)st->anchor, X[3] = {p->X[0], p->X[1], p->X[2]};
+  PetscInt      k = 0;
+
+  Reals(pack, X, 3, b, &k);
+  Reals(pack, &p->gap0, 1, b, &k);
+  Reals(pack, &st->sN, 1, b, &k);
+  Reals(pack, st->sT, 2, b, &k);
+  Reals(pack, st->slip, 3, b, &k);
+  Reals(pack, st->creep, 3, b, &k);
+  Reals(pack, st->tCommit, 3, b, &k);
+  Reals(pack, e, 6, b, &k);
+  Reals(pack, st->dir, 2, b, &k);
+  Reals(pack, &anchor, 1, b, &k);
+  Reals(pack, st->anchorXi, 2, b, &k);
+  Reals(pack, st->us, 3, b, &k);
+  Reals(pack, st->um, 3, b, &k);
+  Reals(pack, st->n, 3, b, &k);
+  Reals(pack, st->T[0], 3, b, &k);
+  Reals(pack, st->T[1], 3, b, &k);
+  Reals(pack, st->tT, 2, b, &k);
+  if (!pack) {
+    st->status        = (SPPointStatus)e[0];
+    st->active        = e[1] != 0.0 ? PETSC_TRUE : PETSC_FALSE;
+    st->inactiveCount = (PetscInt)e[2];
+    st->flips         = (PetscInt)e[3];
+    st->reversed      = e[4] != 0.0 ? PETSC_TRUE : PETSC_FALSE;
+    st->anchored      = e[5] != 0.0 ? PETSC_TRUE : PETSC_FALSE;
+    st->anchor        = (PetscInt)anchor;
+  }
+  return k;
+}
+
+PetscErrorCode SPContactPackPoints(SPContact c, PetscReal buf[])
+{
+  PetscFunctionBeginUser;
+  for (PetscInt i = 0; i < c->n; ++i) {
+    PetscCheck(PointState(PETSC_TRUE, &c->pt[i], &buf[i * SP_POINT_NPACK]) == SP_POINT_NPACK, PETSC_COMM_SELF, PETSC_ERR_PLIB, "SP_POINT_NPACK does not match the packed fields");
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* *same: every point's reference position is the packed one (same mesh and partition) */
+PetscErrorCode SPContactUnpackPoints(SPContact c, const PetscReal buf[], PetscBool *same)
+{
+  PetscFunctionBeginUser;
+  *same = PETSC_TRUE;
+  for (PetscInt i = 0; i < c->n; ++i) {
+    PetscReal b[SP_POINT_NPACK], X[3] = {c->pt[i].X[0], c->pt[i].X[1], c->pt[i].X[2]};
+    for (PetscInt k = 0; k < SP_POINT_NPACK; ++k) b[k] = buf[i * SP_POINT_NPACK + k];
+    for (PetscInt d = 0; d < c->dim; ++d)
+      if (PetscAbsReal(b[d] - X[d]) > 1e-12 * (1.0 + PetscAbsReal(X[d]))) *same = PETSC_FALSE;
+    (void)PointState(PETSC_FALSE, &c->pt[i], b);
+    for (PetscInt d = 0; d < 3; ++d) c->pt[i].X[d] = X[d]; /* keep this run's positions */
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}

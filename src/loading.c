@@ -2,7 +2,9 @@
    and obstacle motion; shifts carry over. Inside a step, methods that update their shifts after a
    converged solve (augmented Lagrangian) repeat the solve until their update is done or its budget
    is spent. A step that fails either way is halved (bounded), then the run stops with a clear
-   message; converged steps keep their output. */
+   message; converged steps keep their output. After every written step the restart data goes into
+   the h5 and a pending SIGTERM/SIGINT (signals.c) stops the run there, on every rank. A restarted
+   run (-restart) starts from the step, load factor and increment SPRestartLoad restored. */
 #include <spcontact-impl.h>
 
 static PetscErrorCode SolveStep(SPApp app, PetscReal load, PetscInt step, Vec ubackup, PetscBool *ok)
@@ -33,15 +35,35 @@ static PetscErrorCode SolveStep(SPApp app, PetscReal load, PetscInt step, Vec ub
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The safe point after a written step: a SIGTERM/SIGINT caught on any rank stops the run on every
+   rank, unless the load is complete (then the run ends normally) */
+static PetscErrorCode Interrupted(SPApp app, PetscBool *stop)
+{
+  const char *prefix;
+
+  PetscFunctionBeginUser;
+  PetscCall(SPSignalsPending(app->comm, &app->signals, app->stepsDone, &app->interrupted));
+  if (app->loadReached >= 1.0 - 1e-12) app->interrupted = 0;
+  *stop = app->interrupted ? PETSC_TRUE : PETSC_FALSE;
+  if (!*stop) PetscFunctionReturn(PETSC_SUCCESS);
+  app->converged = PETSC_FALSE;
+  PetscCall(SPOutputGetPrefix(app->output, &prefix));
+  if (app->output->enabled) PetscCall(PetscPrintf(app->comm, "spcontact: interrupted by signal %d after load step %" PetscInt_FMT " (load factor %g); restart with -restart %s.h5.part\n", app->interrupted, app->stepsDone, (double)app->loadReached, prefix));
+  else PetscCall(PetscPrintf(app->comm, "spcontact: interrupted by signal %d after load step %" PetscInt_FMT " (load factor %g); no restart data (-output_fields false)\n", app->interrupted, app->stepsDone, (double)app->loadReached));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode SPLoadingRun(SPApp app)
 {
   PetscReal done = 0.0, inc = 1.0 / app->loadSteps;
   PetscInt  step = 0, cuts = 0;
+  PetscBool halt;
   Vec       ubackup;
 
   PetscFunctionBeginUser;
   PetscCall(VecDuplicate(app->u, &ubackup));
   app->converged = PETSC_TRUE;
+  if (app->restartFile[0]) done = app->loadReached, inc = app->loadInc, step = app->stepsDone; /* SPRestartLoad */
   while (done < 1.0 - 1e-12) {
     PetscReal load = PetscMin(1.0, done + inc);
     PetscBool ok = PETSC_FALSE;
@@ -66,6 +88,10 @@ PetscErrorCode SPLoadingRun(SPApp app)
     PetscCall(SPOutputWriteStep(app->output, app->problem, app->u, app->contact));
     PetscCall(PetscLogStagePop());
     PetscCall(SPContactReportStep(app->contact, app->u, step, load));
+    app->stepsDone = step, app->loadReached = done;
+    PetscCall(SPRestartWriteStep(app, inc));
+    PetscCall(Interrupted(app, &halt));
+    if (halt) break;
   }
   app->stepsDone   = step;
   app->loadReached = done;

@@ -17,7 +17,7 @@ static PetscErrorCode ErrorHandler(MPI_Comm comm, int line, const char *fun, con
   return PetscTraceBackErrorHandler(comm, line, fun, file, n, p, mess, ctx);
 }
 
-static PetscErrorCode Run(PetscBool *converged)
+static PetscErrorCode Run(PetscBool *converged, int *interrupted)
 {
   SPApp     app = NULL;
   PetscBool help;
@@ -31,7 +31,7 @@ static PetscErrorCode Run(PetscBool *converged)
     PetscCall(SPAppDestroy(&app));
     PetscFunctionReturn(PETSC_SUCCESS);
   }
-  PetscCall(SPAppRun(app, converged));
+  PetscCall(SPAppRun(app, converged, interrupted));
   PetscCall(SPAppSummary(app));
   PetscCall(SPAppDestroy(&app));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -41,15 +41,20 @@ int main(int argc, char **argv)
 {
   PetscErrorCode ierr;
   PetscBool      converged = PETSC_FALSE;
+  int            interrupted = 0; /* the signal that stopped the run */
 
   PetscCall(PetscInitialize(&argc, &argv, NULL, help));
   PetscCall(PetscPushErrorHandler(ErrorHandler, NULL));
-  ierr = Run(&converged);
+  ierr = Run(&converged, &interrupted);
   if (ierr == PETSC_ERR_USER_INPUT || ierr == PETSC_ERR_USER || ierr == PETSC_ERR_ARG_OUTOFRANGE || ierr == PETSC_ERR_ARG_WRONG) {
     (void)PetscFinalize();
     return 1; /* bad input: one line on stderr */
   }
   if (ierr) PETSCABORT(PETSC_COMM_WORLD, ierr);
+  if (interrupted) { /* SPLoadingRun printed how to restart */
+    PetscCall(PetscFinalize());
+    return 128 + interrupted;
+  }
   if (!converged) PetscCall(PetscPrintf(PETSC_COMM_WORLD, "spcontact: the solve did not converge; results above are for the last converged load step only\n"));
   PetscCall(PetscFinalize());
   return converged ? 0 : 2;

@@ -62,7 +62,7 @@ static void Attribute(FILE *fp, const char h5[], const char name[], PetscInt nc,
   fprintf(fp, "          </DataItem>\n        </Attribute>\n");
 }
 
-PetscErrorCode SPOutputWriteXdmf(SPOutput o)
+PetscErrorCode SPOutputWriteXdmf(SPOutput o, PetscBool complete)
 {
   static const char *const cfields[] = {"contact_pressure", "gap", "shift", "active"};
   static const char *const ffields[] = {"tangential_traction", "slip", "status"}; /* with friction */
@@ -77,8 +77,9 @@ PetscErrorCode SPOutputWriteXdmf(SPOutput o)
   PetscCall(DMGetDimension(o->dm, &dim));
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   if (rank) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCall(PetscSNPrintf(h5, sizeof(h5), "%s.h5", o->name)); /* relative: the .xmf sits beside it */
-  PetscCall(PetscSNPrintf(xmf, sizeof(xmf), "%s.xmf", o->prefix));
+  /* relative: the .xmf sits beside it; written as .xmf.part, renamed with the .h5 when complete */
+  PetscCall(PetscSNPrintf(h5, sizeof(h5), "%s.h5%s", o->name, complete ? "" : ".part"));
+  PetscCall(PetscSNPrintf(xmf, sizeof(xmf), "%s.xmf.part", o->prefix));
   fp = fopen(xmf, "w");
   PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write %s", xmf);
   fprintf(fp, "<?xml version=\"1.0\" ?>\n<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n<Xdmf Version=\"2.0\">\n  <Domain>\n");

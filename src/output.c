@@ -2,10 +2,13 @@
    and, with contact, contact_pressure, gap, shift, active; with friction (any obstacle or pair
    with mu > 0) also tangential_traction and slip (vectors) and status (0 open, 1 stick, 2 slip,
    -1 on vertices that are not contact points)), an XDMF file beside it for ParaView,
-   and the CSV Newton history. Files are written as *.part and renamed when the run ends, so an
-   interrupted run never leaves a file that looks complete. */
+   and the CSV Newton history. Files are written as *.part and renamed only when the run completes,
+   so a failed or interrupted run never leaves a file that looks complete; the h5's root attribute
+   status says complete / failed / interrupted. */
 #include <spcontact-impl.h>
 #include <petscviewerhdf5.h>
+#include <errno.h>
+#include <string.h>
 
 static const char *const ContactFields[] = {"contact_pressure", "gap", "shift", "active"};
 static const char *const FrictionFields[] = {"tangential_traction", "slip", "status"};
@@ -210,40 +213,77 @@ PetscErrorCode SPOutputDestroy(SPOutput *out)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode Rename(MPI_Comm comm, const char prefix[], const char ext[])
+PetscErrorCode SPOutputGetPointsFile(SPOutput o, char file[], size_t len)
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscSNPrintf(file, len, "%s_contact.csv.part", o->prefix));
+  o->pointsFile = PETSC_TRUE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Rank 0: every *.part file of the run to its final name, or none: a failed rename undoes the
+   ones before it. *failed: the index of the failing file + 1 (0: all renamed), errno in *err. */
+static PetscErrorCode RenameAll(SPOutput o, const char *const files[], PetscInt n, PetscInt *failed, int *err)
 {
   char from[PETSC_MAX_PATH_LEN + 32], to[PETSC_MAX_PATH_LEN + 32];
 
   PetscFunctionBeginUser;
-  PetscCall(PetscSNPrintf(from, sizeof(from), "%s.%s.part", prefix, ext));
-  PetscCall(PetscSNPrintf(to, sizeof(to), "%s.%s", prefix, ext));
-  PetscCheck(!rename(from, to), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "cannot rename %s to %s", from, to);
-  (void)comm;
+  *failed = 0;
+  for (PetscInt k = 0; k < n && !*failed; ++k) {
+    PetscCall(PetscSNPrintf(from, sizeof(from), "%s%s.part", o->prefix, files[k]));
+    PetscCall(PetscSNPrintf(to, sizeof(to), "%s%s", o->prefix, files[k]));
+    if (rename(from, to)) *failed = k + 1, *err = errno;
+  }
+  for (PetscInt k = *failed - 2; k >= 0; --k) { /* undo */
+    PetscCall(PetscSNPrintf(from, sizeof(from), "%s%s.part", o->prefix, files[k]));
+    PetscCall(PetscSNPrintf(to, sizeof(to), "%s%s", o->prefix, files[k]));
+    (void)rename(to, from);
+  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Finish the files: rename *.part, write the XDMF, and the contact points CSV of the last state.
-   The files stay complete even when the run stopped early: they hold the converged steps. */
-PetscErrorCode SPOutputClose(SPOutput o, SPContact contact, PetscBool converged)
+/* The run's status (complete / failed / interrupted), last converged step and load factor as
+   attributes of the h5 root group */
+static PetscErrorCode WriteStatus(SPOutput o, const char status[], PetscInt step, PetscReal load)
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscViewerHDF5WriteAttribute(o->h5, "/", "status", PETSC_STRING, status));
+  PetscCall(PetscViewerHDF5WriteAttribute(o->h5, "/", "last_step", PETSC_INT, &step));
+  PetscCall(PetscViewerHDF5WriteAttribute(o->h5, "/", "last_load_factor", PETSC_REAL, &load));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Finish the files: the status attribute, the XDMF; only a complete run renames its *.part files
+   (h5, xmf, csv history, contact-points csv) to their final names, all or none. A failed or
+   interrupted run keeps the .part names; its h5 holds every converged step (readable). */
+PetscErrorCode SPOutputClose(SPOutput o, const char status[], PetscInt step, PetscReal load)
 {
   MPI_Comm    comm = PetscObjectComm((PetscObject)o->dm);
   PetscMPIInt rank;
+  PetscBool   complete;
+  const char *files[4];
+  PetscInt    n = 0, failed = 0;
+  int         err = 0;
 
   PetscFunctionBeginUser;
+  PetscCall(PetscStrcmp(status, "complete", &complete));
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   PetscCall(PetscFClose(comm, o->csv));
   o->csv = NULL;
   if (o->h5) {
     PetscCall(PetscViewerHDF5PopTimestepping(o->h5));
+    PetscCall(WriteStatus(o, status, step, load));
     PetscCall(PetscViewerPopFormat(o->h5));
     PetscCall(PetscViewerDestroy(&o->h5));
   }
-  if (rank == 0) {
-    PetscCall(Rename(comm, o->prefix, "csv"));
-    if (o->enabled) PetscCall(Rename(comm, o->prefix, "h5"));
-  }
-  if (o->enabled) PetscCall(SPOutputWriteXdmf(o));
-  (void)contact;
-  (void)converged;
+  if (o->enabled) PetscCall(SPOutputWriteXdmf(o, complete));
+  if (!complete) PetscFunctionReturn(PETSC_SUCCESS);
+  files[n++] = ".csv";
+  if (o->pointsFile) files[n++] = "_contact.csv";
+  if (o->enabled) files[n++] = ".xmf", files[n++] = ".h5";
+  if (rank == 0) PetscCall(RenameAll(o, files, n, &failed, &err));
+  PetscCallMPI(MPI_Bcast(&failed, 1, MPIU_INT, 0, comm));
+  PetscCallMPI(MPI_Bcast(&err, 1, MPI_INT, 0, comm));
+  PetscCheck(!failed, comm, PETSC_ERR_USER_INPUT, "cannot rename %s%s.part to %s%s (%s); the complete results stay under their .part names", o->prefix, files[failed - 1], o->prefix, files[failed - 1], strerror(err));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

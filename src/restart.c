@@ -1,0 +1,255 @@
+#define _XOPEN_SOURCE 700 /* realpath */
+/* Restart data: after every converged load step the h5 gets, as timestep k of the group /restart,
+   everything the next step needs: the global displacement vector (displacement), every contact
+   point's state (points: SP_POINT_NPACK reals each: shifts or multipliers, committed slip and
+   friction anchors, status, ...) and per rank the loop's and the counters' state (counters: load
+   factor, increment, step, cut-backs, Newton/linear/function counts, contact counters, contact
+   centre). Attributes of /restart name the run (dimension, dofs, contact points, ranks, method,
+   friction, load steps) and the number of steps stored. The vectors are in the partition's order:
+   a restart needs the same mesh, options and rank count (checked, one line each).
+   -restart <file.h5> loads the last stored step before the output files are opened; the restarted
+   run's file holds the steps after it (root attributes first_step, restarted_from). */
+#include <spcontact-impl.h>
+#include <petscviewerhdf5.h>
+#include <hdf5.h>
+#include <stdlib.h>
+
+#define NCOUNT 19 /* reals per rank in /restart/counters */
+
+/* A plain (DM-less) copy of the layout of n local reals with block size bs: VecView writes it raw */
+static PetscErrorCode PlainVec(MPI_Comm comm, PetscInt n, PetscInt bs, const char name[], Vec *v)
+{
+  PetscFunctionBeginUser;
+  PetscCall(VecCreate(comm, v));
+  PetscCall(VecSetSizes(*v, n * bs, PETSC_DECIDE));
+  PetscCall(VecSetBlockSize(*v, bs));
+  PetscCall(VecSetType(*v, VECSTANDARD));
+  PetscCall(PetscObjectSetName((PetscObject)*v, name));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The counters record, one direction or the other */
+static void Counters(PetscBool pack, SPApp a, PetscReal *inc, PetscReal b[])
+{
+  SPSolver  s = a->solver;
+  SPContact c = a->contact;
+  PetscReal v[NCOUNT] = {a->loadReached, *inc, (PetscReal)a->stepsDone, (PetscReal)a->cutbacks, (PetscReal)s->newtonTotal, (PetscReal)s->linearTotal, (PetscReal)s->funcTotal, (PetscReal)c->evaluations, (PetscReal)c->stepLimits, (PetscReal)c->shiftUpdates, (PetscReal)c->exchanges, (PetscReal)c->received, (PetscReal)c->rebuilds, (PetscReal)c->stats.augmentations, (PetscReal)c->centreSet, c->centre[0], c->centre[1], c->centre[2], (PetscReal)c->exchangeTime};
+
+  if (pack) {
+    for (PetscInt k = 0; k < NCOUNT; ++k) b[k] = v[k];
+    return;
+  }
+  a->loadReached = b[0], *inc = b[1], a->stepsDone = (PetscInt)b[2], a->cutbacks = (PetscInt)b[3];
+  s->newtonTotal = (PetscInt)b[4], s->linearTotal = (PetscInt)b[5], s->funcTotal = (PetscInt)b[6];
+  c->evaluations = (PetscInt)b[7], c->stepLimits = (PetscInt)b[8], c->shiftUpdates = (PetscInt)b[9];
+  c->exchanges = (PetscInt)b[10], c->received = (PetscInt64)b[11], c->rebuilds = (PetscInt)b[12];
+  c->stats.augmentations = (PetscInt)b[13], c->centreSet = b[14] != 0.0 ? PETSC_TRUE : PETSC_FALSE;
+  for (PetscInt d = 0; d < 3; ++d) c->centre[d] = b[15 + d];
+  c->exchangeTime = b[18];
+}
+
+/* The run's identity, as attributes of /restart: written with the first step, compared on restart */
+typedef struct {
+  PetscInt dim, dofs, points, ranks, friction, loadSteps;
+  char     method[64];
+} Identity;
+
+static PetscErrorCode GetIdentity(SPApp a, Identity *id)
+{
+  PetscMPIInt size;
+  PetscInt    n = a->contact->enabled ? a->contact->n : 0;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscMemzero(id, sizeof(*id)));
+  PetscCallMPI(MPI_Comm_size(a->comm, &size));
+  PetscCall(DMGetDimension(a->dm, &id->dim));
+  PetscCall(VecGetSize(a->u, &id->dofs));
+  PetscCallMPI(MPI_Allreduce(&n, &id->points, 1, MPIU_INT, MPI_SUM, a->comm));
+  id->ranks     = size;
+  id->friction  = a->contact->enabled && a->contact->friction;
+  id->loadSteps = a->loadSteps;
+  PetscCall(PetscStrncpy(id->method, a->contact->enabled ? a->contact->method->name : "none", sizeof(id->method)));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static const char *const IdNames[] = {"dim", "dofs", "contact_points", "ranks", "friction", "load_steps"};
+
+static PetscErrorCode WriteIdentity(PetscViewer h5, const Identity *id)
+{
+  const PetscInt v[6] = {id->dim, id->dofs, id->points, id->ranks, id->friction, id->loadSteps};
+
+  PetscFunctionBeginUser;
+  for (PetscInt k = 0; k < 6; ++k) PetscCall(PetscViewerHDF5WriteAttribute(h5, "/restart", IdNames[k], PETSC_INT, &v[k]));
+  PetscCall(PetscViewerHDF5WriteAttribute(h5, "/restart", "method", PETSC_STRING, id->method));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* After converged step a->stepsDone was written (output timestep nsteps - 1): its restart data */
+PetscErrorCode SPRestartWriteStep(SPApp a, PetscReal inc)
+{
+  SPOutput    o = a->output;
+  SPContact   c = a->contact;
+  Vec         v;
+  PetscScalar *x;
+  PetscInt     n = c->enabled ? c->n : 0, steps = o->nsteps;
+  hid_t        fid;
+
+  PetscFunctionBeginUser;
+  if (!o->enabled || !o->h5) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(PetscViewerHDF5SetTimestep(o->h5, o->nsteps - 1));
+  PetscCall(PetscViewerHDF5PushGroup(o->h5, "/restart"));
+  PetscCall(VecGetLocalSize(a->u, &n));
+  PetscCall(PlainVec(a->comm, n, 1, "displacement", &v));
+  PetscCall(VecCopy(a->u, v));
+  PetscCall(VecView(v, o->h5));
+  PetscCall(VecDestroy(&v));
+  n = c->enabled ? c->n : 0;
+  PetscCall(PlainVec(a->comm, n, SP_POINT_NPACK, "points", &v));
+  PetscCall(VecGetArray(v, &x));
+  if (n) PetscCall(SPContactPackPoints(c, x));
+  PetscCall(VecRestoreArray(v, &x));
+  PetscCall(VecView(v, o->h5));
+  PetscCall(VecDestroy(&v));
+  PetscCall(PlainVec(a->comm, 1, NCOUNT, "counters", &v));
+  PetscCall(VecGetArray(v, &x));
+  Counters(PETSC_TRUE, a, &inc, x);
+  PetscCall(VecRestoreArray(v, &x));
+  PetscCall(VecView(v, o->h5));
+  PetscCall(VecDestroy(&v));
+  PetscCall(PetscViewerHDF5PopGroup(o->h5));
+  if (steps == 1) { /* a restarted run's file starts after the restored step: say where from */
+    Identity id;
+    PetscInt first = a->stepsDone;
+    PetscCall(GetIdentity(a, &id));
+    PetscCall(WriteIdentity(o->h5, &id));
+    PetscCall(PetscViewerHDF5WriteAttribute(o->h5, "/", "first_step", PETSC_INT, &first));
+    if (a->restartFile[0]) PetscCall(PetscViewerHDF5WriteAttribute(o->h5, "/", "restarted_from", PETSC_STRING, a->restartFile));
+  }
+  PetscCall(PetscViewerHDF5WriteAttribute(o->h5, "/restart", "steps", PETSC_INT, &steps));
+  PetscCall(PetscViewerHDF5GetFileId(o->h5, &fid));
+  PetscCheck(H5Fflush(fid, H5F_SCOPE_GLOBAL) >= 0, a->comm, PETSC_ERR_FILE_WRITE, "cannot flush the output file (disk full?)");
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Rank 0 checks that the file exists, opens as HDF5 and is not this run's own output file */
+static PetscErrorCode CheckFile(SPApp a)
+{
+  PetscMPIInt rank;
+  int         why = 0;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(a->comm, &rank));
+  if (rank == 0) {
+    FILE *fp = fopen(a->restartFile, "r");
+    if (!fp) why = 1;
+    else {
+      hid_t        f;
+      H5E_auto2_t  func;
+      void        *data;
+      fclose(fp);
+      H5Eget_auto2(H5E_DEFAULT, &func, &data);
+      H5Eset_auto2(H5E_DEFAULT, NULL, NULL); /* a failed open is reported below, in one line */
+      f = H5Fopen(a->restartFile, H5F_ACC_RDONLY, H5P_DEFAULT);
+      H5Eset_auto2(H5E_DEFAULT, func, data);
+      if (f < 0) why = 2;
+      else H5Fclose(f);
+    }
+    if (!why) { /* the output of this run would overwrite it */
+      char own[PETSC_MAX_PATH_LEN + 16], r1[PETSC_MAX_PATH_LEN], r2[PETSC_MAX_PATH_LEN];
+      for (PetscInt k = 0; k < 2 && !why; ++k) {
+        PetscCall(PetscSNPrintf(own, sizeof(own), "%s.h5%s", a->output->prefix, k ? ".part" : ""));
+        if (realpath(own, r1) && realpath(a->restartFile, r2) && !strcmp(r1, r2)) why = 3;
+      }
+    }
+  }
+  PetscCallMPI(MPI_Bcast(&why, 1, MPI_INT, 0, a->comm));
+  PetscCheck(why != 1, a->comm, PETSC_ERR_USER_INPUT, "-restart %s: no such file (give the .h5 or .h5.part file of the interrupted run)", a->restartFile);
+  PetscCheck(why != 2, a->comm, PETSC_ERR_USER_INPUT, "-restart %s: not a readable HDF5 file (truncated, or not spcontact output)", a->restartFile);
+  PetscCheck(why != 3, a->comm, PETSC_ERR_USER_INPUT, "-restart %s: this run would write its output over that file; give the restarted run another -output_name", a->restartFile);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The file's run against this one: one line per mismatch */
+static PetscErrorCode CheckIdentity(SPApp a, PetscViewer h5, PetscInt *steps)
+{
+  Identity  id;
+  PetscBool has;
+  char     *method = NULL;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscViewerHDF5HasAttribute(h5, "/restart", "steps", &has));
+  PetscCheck(has, a->comm, PETSC_ERR_USER_INPUT, "-restart %s: the file has no restart data (no converged load step, or written with -output_fields false)", a->restartFile);
+  PetscCall(PetscViewerHDF5ReadAttribute(h5, "/restart", "steps", PETSC_INT, NULL, steps));
+  PetscCall(GetIdentity(a, &id));
+  {
+    const PetscInt mine[5] = {id.dim, id.dofs, id.points, id.ranks, id.friction};
+    const char *const what[5] = {"mesh dimension", "number of displacement dofs (mesh or -fe_degree)", "number of contact points (contact surfaces)", "number of MPI ranks (restart on as many ranks as the interrupted run)", "friction (0 off, 1 on)"};
+    for (PetscInt k = 0; k < 5; ++k) {
+      PetscInt theirs;
+      PetscCall(PetscViewerHDF5ReadAttribute(h5, "/restart", IdNames[k], PETSC_INT, NULL, &theirs));
+      PetscCheck(theirs == mine[k], a->comm, PETSC_ERR_USER_INPUT, "-restart %s: %s is %" PetscInt_FMT " there and %" PetscInt_FMT " here; restart with the interrupted run's mesh and options", a->restartFile, what[k], theirs, mine[k]);
+    }
+  }
+  PetscCall(PetscViewerHDF5ReadAttribute(h5, "/restart", "method", PETSC_STRING, NULL, &method));
+  PetscCheck(!strcmp(method, id.method), a->comm, PETSC_ERR_USER_INPUT, "-restart %s: contact method %s there and %s here; restart with -contact_method %s", a->restartFile, method, id.method, method);
+  PetscCall(PetscFree(method));
+  PetscCall(PetscViewerHDF5ReadAttribute(h5, "/restart", "load_steps", PETSC_INT, NULL, &id.loadSteps));
+  if (id.loadSteps != a->loadSteps) a->loadInc = -1.0; /* new -load_steps: go on with 1/N from the restored load factor */
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode LoadVec(PetscViewer h5, Vec v, PetscInt *local)
+{
+  PetscFunctionBeginUser;
+  PetscCall(VecLoad(v, h5));
+  if (local) PetscCall(VecGetLocalSize(v, local));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* -restart: displacement, contact state, load factor, step and counters of the file's last step */
+PetscErrorCode SPRestartLoad(SPApp a)
+{
+  PetscViewer  h5;
+  Vec          v;
+  PetscInt     steps = 0, n;
+  PetscScalar *x;
+  PetscReal    inc;
+  PetscBool    same, all;
+
+  PetscFunctionBeginUser;
+  if (!a->restartFile[0]) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(CheckFile(a));
+  PetscCall(PetscViewerHDF5Open(a->comm, a->restartFile, FILE_MODE_READ, &h5));
+  PetscCall(CheckIdentity(a, h5, &steps));
+  PetscCall(PetscViewerHDF5PushTimestepping(h5));
+  PetscCall(PetscViewerHDF5SetTimestep(h5, steps - 1));
+  PetscCall(PetscViewerHDF5PushGroup(h5, "/restart"));
+  PetscCall(VecGetLocalSize(a->u, &n));
+  PetscCall(PlainVec(a->comm, n, 1, "displacement", &v));
+  PetscCall(LoadVec(h5, v, NULL));
+  PetscCall(VecCopy(v, a->u));
+  PetscCall(VecDestroy(&v));
+  n = a->contact->enabled ? a->contact->n : 0;
+  PetscCall(PlainVec(a->comm, n, SP_POINT_NPACK, "points", &v));
+  PetscCall(LoadVec(h5, v, NULL));
+  PetscCall(VecGetArray(v, &x));
+  same = PETSC_TRUE;
+  if (n) PetscCall(SPContactUnpackPoints(a->contact, x, &same));
+  PetscCall(VecRestoreArray(v, &x));
+  PetscCall(VecDestroy(&v));
+  PetscCallMPI(MPI_Allreduce(&same, &all, 1, MPIU_BOOL, MPI_LAND, a->comm));
+  PetscCheck(all, a->comm, PETSC_ERR_USER_INPUT, "-restart %s: the contact points lie elsewhere there (another mesh or partition); restart with the interrupted run's mesh, options and rank count", a->restartFile);
+  PetscCall(PlainVec(a->comm, 1, NCOUNT, "counters", &v));
+  PetscCall(LoadVec(h5, v, NULL));
+  PetscCall(VecGetArray(v, &x));
+  Counters(PETSC_FALSE, a, &inc, x);
+  PetscCall(VecRestoreArray(v, &x));
+  PetscCall(VecDestroy(&v));
+  PetscCall(PetscViewerHDF5PopGroup(h5));
+  PetscCall(PetscViewerHDF5PopTimestepping(h5));
+  PetscCall(PetscViewerDestroy(&h5));
+  a->loadInc = a->loadInc < 0.0 ? 1.0 / a->loadSteps : inc;
+  PetscCheck(a->loadReached < 1.0 - 1e-12, a->comm, PETSC_ERR_USER_INPUT, "-restart %s: that run already reached load factor 1; nothing to resume", a->restartFile);
+  PetscCall(PetscPrintf(a->comm, "restart: resuming after load step %" PetscInt_FMT " (load factor %g) of %s\n", a->stepsDone, (double)a->loadReached, a->restartFile));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}

@@ -1,0 +1,131 @@
+# Run lifecycle: the h5 status attribute (complete / failed / interrupted), final names only for
+# complete runs, SIGTERM/SIGINT stop at the next converged step, -restart resumes from it.
+# Reference for a restart: the same run uninterrupted. Measured: the restarted run reproduces it
+# bit for bit (the state it needs is stored exactly); asserted to 1e-10 relative.
+
+# rs_h5 H5 : "status last_step last_load_factor restart_steps" of an output file
+rs_h5() {
+  "$PYTHON" - "$1" <<'EOF'
+import sys
+import h5py
+with h5py.File(sys.argv[1], "r") as f:
+    a = f.attrs
+    s = a["status"].decode() if isinstance(a["status"], bytes) else a["status"]
+    print(s, int(a["last_step"]), "%.12g" % a["last_load_factor"], int(f["/restart"].attrs["steps"]) if "restart" in f else 0)
+EOF
+}
+
+# rs_same_field A.h5 B.h5 : max |u_A - u_B| / max |u_A| of the displacement at the last step
+rs_same_field() {
+  "$PYTHON" - "$1" "$2" <<'EOF'
+import sys
+import h5py
+import numpy as np
+with h5py.File(sys.argv[1], "r") as a, h5py.File(sys.argv[2], "r") as b:
+    ua = a["/vertex_fields/displacement_Field_0"][-1]
+    ub = b["/vertex_fields/displacement_Field_0"][-1]
+    print("%.3e" % (np.abs(ua - ub).max() / np.abs(ua).max()))
+EOF
+}
+
+# rs_case NP OPTIONS... : 10 load steps uninterrupted; the same interrupted after step 5 (rank 0
+# raises SIGTERM: the others stop with it); restarted from its file; figures and field compared
+rs_case() {
+  local np=$1 rc=0 code; shift
+  local o=("$@" -load_steps 10 -output_dir "$CASE_DIR")
+  spc "$CASE_DIR/full.txt" "$np" "${o[@]}" -output_name full || return 1
+  spc "$CASE_DIR/half.txt" "$np" "${o[@]}" -output_name half -debug_interrupt_after_step 5; code=$?
+  [ "$code" -ne 0 ] || { echo "interrupted run exited 0 FAILED"; rc=1; }
+  assert_eq "restart line" "$(grep -c "^spcontact: interrupted by signal 15 after load step 5 (load factor 0.5); restart with -restart $CASE_DIR/half.h5.part" "$CASE_DIR/half.txt")" 1 || rc=1
+  assert_eq "interrupted file: status, last step, load factor, restart steps" "$(rs_h5 "$CASE_DIR/half.h5.part")" "interrupted 5 0.5 5" || rc=1
+  assert_eq "interrupted run: no final-named file" "$(ls "$CASE_DIR" | grep -c '^half[._a-z]*\(h5\|xmf\|csv\)$')" 0 || rc=1
+  assert_eq "complete file: status, last step, load factor" "$(rs_h5 "$CASE_DIR/full.h5" | cut -d' ' -f1-2)" "complete 10" || rc=1
+  spc "$CASE_DIR/rest.txt" "$np" "${o[@]}" -output_name rest -restart "$CASE_DIR/half.h5.part" || return 1
+  assert_eq "restarted run status" "$(sval "$CASE_DIR/rest.txt" status) $(rs_h5 "$CASE_DIR/rest.h5" | cut -d' ' -f1-2)" "complete complete 10" || rc=1
+  assert_eq "restarted file: first step, slabs" "$("$PYTHON" -c "import h5py; f = h5py.File('$CASE_DIR/rest.h5', 'r'); print(f.attrs['first_step'], f['/vertex_fields/displacement_Field_0'].shape[0])")" "6 5" || rc=1
+  same_summary "$CASE_DIR/full.txt" "$CASE_DIR/rest.txt" 1e-10 load_factor load_steps newton_iterations displacement_max \
+    contact_active_points contact_max_penetration contact_gap_error contact_force_x contact_force_y contact_peak_pressure contact_radius || rc=1
+  if [ "$(sval "$CASE_DIR/full.txt" contact_friction)" = yes ]; then
+    same_summary "$CASE_DIR/full.txt" "$CASE_DIR/rest.txt" 1e-10 contact_stick_points contact_slip_points contact_max_stick_creep contact_tangential_force_x || rc=1
+  fi
+  assert_le "displacement field at load 1, restarted vs uninterrupted (relative)" "$(rs_same_field "$CASE_DIR/full.h5" "$CASE_DIR/rest.h5")" 1e-10 || rc=1
+  return $rc
+}
+
+test_restart_b2_shifted()         { rs_case 1 -options_file input/hertz2d.opts -contact_method shifted; }
+test_restart_b2_shifted_np2()     { rs_case 2 -options_file input/hertz2d.opts -contact_method shifted; }
+test_restart_friction_alm()       { rs_case 1 -options_file input/friction_block2d.opts -contact_method alm; }
+# F1b full slip: slipping points with moving anchors and tangential shifts
+test_restart_friction_slide_shifted_np2() { rs_case 2 -options_file input/friction_slide2d.opts -contact_method shifted; }
+
+# rs_kill SIG CODE: a real signal from outside (1 rank, no launcher): the run stops after the step
+# it is in, exits with CODE (128 + signal), the file says interrupted and holds that many steps
+rs_kill() {
+  local sig=$1 want=$2 rc=0 pid code n
+  RERUN="$SPC -options_file input/hertz2d.opts -load_steps 10 -contact_monitor -output_dir $CASE_DIR -output_name k & kill -$sig \$!"
+  $SPC -options_file input/hertz2d.opts -load_steps 10 -contact_monitor -output_dir "$CASE_DIR" -output_name k >"$CASE_DIR/k.txt" 2>&1 &
+  pid=$!
+  for _ in $(seq 1 1200); do # until step 2 has started (its first Newton line), at most 120 s
+    n=$(grep -c "contact   0 " "$CASE_DIR/k.txt"); [ "$n" -ge 2 ] && break; sleep 0.1
+  done
+  kill -"$sig" "$pid"; wait "$pid"; code=$?
+  assert_eq "exit code after SIG$sig" "$code" "$want" || rc=1
+  local st; st=$(rs_h5 "$CASE_DIR/k.h5.part") || rc=1
+  assert_eq "status" "${st%% *}" interrupted || rc=1
+  n=$(echo "$st" | cut -d' ' -f2)
+  assert_ge "converged steps kept" "$n" 2 || rc=1
+  assert_le "stopped early" "$n" 9 || rc=1
+  assert_eq "readable steps in the h5 = last_step" "$("$PYTHON" -c "import h5py; print(h5py.File('$CASE_DIR/k.h5.part','r')['/vertex_fields/displacement_Field_0'].shape[0])")" "$n" || rc=1
+  return $rc
+}
+
+test_restart_kill_term() { rs_kill TERM 143; }
+test_restart_kill_int()  { rs_kill INT 130; }
+
+# Final names all or none: the h5's final name is taken by a directory, so its rename fails; the
+# renames before it (csv, contact csv, xmf) are undone, one error line, exit 1
+test_restart_rename_all_or_none() {
+  local rc=0 code
+  mkdir -p "$CASE_DIR/d.h5"
+  RERUN="mkdir $CASE_DIR/d.h5; $SPC -options_file input/hertz2d.opts -output_dir $CASE_DIR -output_name d"
+  $SPC -options_file input/hertz2d.opts -output_dir "$CASE_DIR" -output_name d >"$CASE_DIR/o.txt" 2>"$CASE_DIR/e.txt"; code=$?
+  assert_eq "exit code" "$code" 1 || rc=1
+  assert_eq "stderr" "$(cat "$CASE_DIR/e.txt")" "spcontact: error: cannot rename $CASE_DIR/d.h5.part to $CASE_DIR/d.h5 (Is a directory); the complete results stay under their .part names" || rc=1
+  assert_eq "files" "$(cd "$CASE_DIR" && ls -d d.* d_* | tr '\n' ' ')" "d.csv.part d.h5 d.h5.part d.xmf.part d_contact.csv.part " || rc=1
+  return $rc
+}
+
+# A failed run (the step cannot converge in 2 Newton iterations, no cut-back): status failed,
+# exit 2, every file keeps its .part name
+test_restart_failed_status() {
+  local rc=0 code
+  spc "$CASE_DIR/f.txt" 1 -options_file input/hertz2d.opts -load_steps 2 -snes_max_it 2 -load_max_cutbacks 0 -output_dir "$CASE_DIR" -output_name f; code=$?
+  assert_eq "exit code" "$code" 2 || rc=1
+  assert_eq "status" "$(rs_h5 "$CASE_DIR/f.h5.part" | cut -d' ' -f1-2)" "failed 0" || rc=1
+  assert_eq "files, all .part" "$(cd "$CASE_DIR" && ls f.* f_* | tr '\n' ' ')" "f.csv.part f.h5.part f.txt f.xmf.part f_contact.csv.part " || rc=1
+  return $rc
+}
+
+# Restart errors: one line each, nonzero exit, nothing written
+test_restart_bad_input() {
+  local rc=0
+  spc "$CASE_DIR/h.txt" 1 -options_file input/hertz2d.opts -load_steps 4 -debug_interrupt_after_step 1 -output_dir "$CASE_DIR" -output_name h
+  spc "$CASE_DIR/c.txt" 1 -options_file input/hertz2d.opts -load_steps 1 -output_dir "$CASE_DIR" -output_name c || rc=1
+  "$PYTHON" -c "import h5py; h5py.File('$CASE_DIR/empty.h5','w')"
+  echo "not hdf5" > "$CASE_DIR/text.h5"
+  bad_input_cases <<EOF || rc=1
+restart file missing|input/hertz2d.opts|-load_steps 4 -output_name x -restart $CASE_DIR/none.h5
+restart file not HDF5|input/hertz2d.opts|-load_steps 4 -output_name x -restart $CASE_DIR/text.h5
+restart file without restart data|input/hertz2d.opts|-load_steps 4 -output_name x -restart $CASE_DIR/empty.h5
+restart of a complete run|input/hertz2d.opts|-load_steps 1 -output_name x -restart $CASE_DIR/c.h5
+restart over its own file|input/hertz2d.opts|-load_steps 4 -output_name h -restart $CASE_DIR/h.h5.part
+restart with another method|input/hertz2d.opts|-load_steps 4 -output_name x -contact_method alm -restart $CASE_DIR/h.h5.part
+restart with another mesh|input/hertz2d.opts|-load_steps 4 -output_name x -dm_refine 1 -restart $CASE_DIR/h.h5.part
+restart with friction added|input/hertz2d.opts|-load_steps 4 -output_name x -contact_friction_mu 0.2 -restart $CASE_DIR/h.h5.part
+EOF
+  assert_eq "no x.* output written" "$(ls "$CASE_DIR" | grep -c '^x[._]')" 0 || rc=1
+  return $rc
+}
+
+# 3 ranks (the partition cuts the contact surface of the sliding block)
+test_restart_friction_slide_shifted_np3() { rs_case 3 -options_file input/friction_slide2d.opts -contact_method shifted; }
