@@ -1,8 +1,9 @@
 /* Load stepping: the load factor goes 1/N, 2/N, ..., 1 and scales Neumann loads, Dirichlet values
    and obstacle motion; shifts carry over. Inside a step, methods that update their shifts after a
    converged solve (augmented Lagrangian) repeat the solve until their update is done or its budget
-   is spent. A step that fails either way is halved (bounded), then the run stops with a clear
-   message; converged steps keep their output. */
+   is spent. A step that fails either way is halved, within a budget of cut-backs and above a floor
+   on the increment; past either, or past the wall-time limit (checked before every step), the run
+   stops with a one-line reason; converged steps keep their output. */
 #include <spcontact-impl.h>
 
 static PetscErrorCode SolveStep(SPApp app, PetscReal load, PetscInt step, Vec ubackup, PetscBool *ok)
@@ -26,17 +27,34 @@ static PetscErrorCode SolveStep(SPApp app, PetscReal load, PetscInt step, Vec ub
   }
   *ok = reason > 0 ? PETSC_TRUE : PETSC_FALSE;
   if (!*ok) {
-    PetscCall(PetscPrintf(app->comm, "load step %" PetscInt_FMT " (load factor %g): solve did not converge (%s)\n", step, (double)load, SNESConvergedReasons[reason]));
+    PetscCall(PetscPrintf(app->comm, "load step %" PetscInt_FMT " (load factor %g): solve did not converge (%s)\n", step, (double)load, SPSolverReasonName(app->solver, reason)));
     PetscCall(VecCopy(ubackup, app->u));
     PetscCall(SPContactRestoreState(app->contact));
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Why the run must stop before attempting load factor `load` after a failure (ok false) or at a
+   safe point (ok true): the wall time, the cut-back budget, the cut-back floor. NULL: go on. */
+static PetscErrorCode StopReason(SPApp app, PetscBool ok, PetscReal inc, char why[], size_t len, PetscBool *stop)
+{
+  PetscLogDouble t;
+
+  PetscFunctionBeginUser;
+  *stop = PETSC_TRUE;
+  PetscCall(PetscTime(&t));
+  PetscCallMPI(MPI_Bcast(&t, 1, MPI_DOUBLE, 0, app->comm)); /* one decision on every rank */
+  if (app->maxWallTime > 0.0 && t - app->t0 > app->maxWallTime) PetscCall(PetscSNPrintf(why, len, "wall time %.1f s exceeds -max_wall_time %g", (double)(t - app->t0), (double)app->maxWallTime));
+  else if (!ok && app->cutbacks >= app->maxCutbacks) PetscCall(PetscSNPrintf(why, len, "cut-back budget spent (%" PetscInt_FMT " cut-backs, -load_max_cutbacks)", app->cutbacks));
+  else if (!ok && 0.5 * inc < app->minIncrement) PetscCall(PetscSNPrintf(why, len, "halving the increment %g would go below -load_min_increment %g", (double)inc, (double)app->minIncrement));
+  else *stop = PETSC_FALSE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode SPLoadingRun(SPApp app)
 {
   PetscReal done = 0.0, inc = 1.0 / app->loadSteps;
-  PetscInt  step = 0, cuts = 0;
+  PetscInt  step = 0;
   Vec       ubackup;
 
   PetscFunctionBeginUser;
@@ -44,28 +62,29 @@ PetscErrorCode SPLoadingRun(SPApp app)
   app->converged = PETSC_TRUE;
   while (done < 1.0 - 1e-12) {
     PetscReal load = PetscMin(1.0, done + inc);
-    PetscBool ok = PETSC_FALSE;
-    PetscCall(SolveStep(app, load, step + 1, ubackup, &ok));
-    if (!ok) {
-      if (cuts >= app->maxCutbacks) {
-        app->converged = PETSC_FALSE;
-        PetscCall(PetscPrintf(app->comm, "stopping: load factor %g not reached after %" PetscInt_FMT " cut-backs; last converged load factor %g\n", (double)load, cuts, (double)done));
-        break;
-      }
-      cuts++;
-      app->cutbacks++;
-      inc *= 0.5;
-      PetscCall(PetscPrintf(app->comm, "cutting back: load increment halved to %g\n", (double)inc));
+    PetscBool ok = PETSC_TRUE, stop;
+    char      why[256];
+    PetscCall(StopReason(app, ok, inc, why, sizeof(why), &stop));
+    if (!stop) PetscCall(SolveStep(app, load, step + 1, ubackup, &ok));
+    if (ok && !stop) {
+      done = load;
+      step++;
+      PetscCall(SPContactCommitStep(app->contact, app->u));
+      PetscCall(PetscLogStagePush(app->log.output)); /* stage times are exclusive: output leaves "SP solve" */
+      PetscCall(SPOutputWriteStep(app->output, app->problem, app->u, app->contact));
+      PetscCall(PetscLogStagePop());
+      PetscCall(SPContactReportStep(app->contact, app->u, step, load));
       continue;
     }
-    done = load;
-    step++;
-    cuts = 0;
-    PetscCall(SPContactCommitStep(app->contact, app->u));
-    PetscCall(PetscLogStagePush(app->log.output)); /* stage times are exclusive: output leaves "SP solve" */
-    PetscCall(SPOutputWriteStep(app->output, app->problem, app->u, app->contact));
-    PetscCall(PetscLogStagePop());
-    PetscCall(SPContactReportStep(app->contact, app->u, step, load));
+    if (!stop) PetscCall(StopReason(app, ok, inc, why, sizeof(why), &stop));
+    if (stop) {
+      app->converged = PETSC_FALSE;
+      PetscCall(PetscPrintf(app->comm, "stopping: load factor %g not reached: %s; last converged load factor %g\n", (double)load, why, (double)done));
+      break;
+    }
+    app->cutbacks++;
+    inc *= 0.5;
+    PetscCall(PetscPrintf(app->comm, "cutting back: load increment halved to %g\n", (double)inc));
   }
   app->stepsDone   = step;
   app->loadReached = done;
