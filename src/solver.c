@@ -259,9 +259,13 @@ static PetscErrorCode CheckStall(SPSolver s, PetscInt it, PetscReal fnorm, SNESC
   PetscFunctionBeginUser;
   PetscCall(SPContactIsActive(s->contact, &on));
   if (on) PetscCall(SPContactGetIterationStats(s->contact, &st));
-  if (it == 0 || fnorm < 0.99 * s->bestF || st.gapError < 0.99 * s->bestGap) s->sinceProgress = 0;
+  if (it == 0) { /* the initial iterate is no reference: first contact raises |F| and the gap error */
+    s->bestF = s->bestGap = PETSC_MAX_REAL;
+    s->sinceProgress      = 0;
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  if (fnorm < 0.99 * s->bestF || st.gapError < 0.99 * s->bestGap) s->sinceProgress = 0;
   else s->sinceProgress++;
-  if (it == 0) s->bestF = s->bestGap = PETSC_MAX_REAL;
   s->bestF   = PetscMin(s->bestF, fnorm);
   s->bestGap = PetscMin(s->bestGap, on ? st.gapError : 0.0);
   if (s->stallIts <= 0 || s->sinceProgress < s->stallIts || *reason != SNES_CONVERGED_ITERATING) PetscFunctionReturn(PETSC_SUCCESS);
