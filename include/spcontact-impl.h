@@ -209,6 +209,8 @@ struct _n_SPContact {
   PetscInt        nob;
   SPObstacle      ob[SP_MAX_OBSTACLES];
   PetscReal       penalty, alpha, gapTol, stepCap;
+  PetscReal       gapRtol, lengthScale; /* gapTol = gapRtol x lengthScale unless -contact_gap_tol is given */
+  PetscBool       gapTolSet;
   PetscReal       mu, alphaT, creepRtol, slipRtol; /* friction (-contact_friction_*) */
   PetscReal       obMu[SP_MAX_OBSTACLES];          /* per obstacle (default mu) */
   PetscBool       friction;                        /* some obstacle or pair has mu > 0 */
@@ -269,6 +271,7 @@ PETSC_EXTERN void           SPContactPointTraction(SPContact, PetscInt, PetscRea
 PETSC_EXTERN PetscBool      SPContactPointActive(SPContact, PetscInt);
 PETSC_EXTERN PetscErrorCode SPContactComputeStats(SPContact);
 PETSC_EXTERN PetscErrorCode SPContactComputeAreas(SPContact);
+PETSC_EXTERN PetscErrorCode SPContactSetGapTolerance(SPContact);
 PETSC_EXTERN PetscErrorCode SPContactRecoverForces(SPContact);
 PETSC_EXTERN PetscErrorCode SPContactFacetVertices(DM, PetscInt, PetscInt *, PetscInt[], PetscReal[]);
 /* contact-friction.c */
@@ -328,6 +331,11 @@ struct _n_SPSolver {
   SPFastElastic       fast;      /* NULL: the generic PetscFE bulk operator */
   PetscBool           checkFast; /* compare the fast and the generic operator once, print the differences */
   PetscReal           r0Load;
+  PetscReal           atolRel, fscale; /* residual atol = atolRel x fscale (largest initial |F| of the run) unless -snes_atol */
+  PetscBool           userAtol;
+  PetscInt            stallIts, sinceProgress; /* stagnation: stop after stallIts iterations without progress */
+  PetscReal           bestF, bestGap;
+  PetscBool           stalled;
 };
 
 struct _n_SPOutput {
@@ -372,6 +380,7 @@ struct _n_SPApp {
   SPOutput  output;
   Vec       u;
   PetscInt  loadSteps, maxCutbacks, stepsDone, cutbacks;
+  PetscReal minIncrement, maxWallTime; /* cut-back floor (load factor); seconds (0: none) */
   PetscBool converged;
   PetscReal loadReached;
   PetscLogDouble t0;

@@ -110,6 +110,7 @@ PETSC_EXTERN PetscErrorCode SPSolverSetFromOptions(SPSolver);
 PETSC_EXTERN PetscErrorCode SPSolverSolve(SPSolver, Vec, SNESConvergedReason *);
 PETSC_EXTERN PetscErrorCode SPSolverSetHistory(SPSolver, FILE *, PetscInt);
 PETSC_EXTERN PetscErrorCode SPSolverGetCounts(SPSolver, PetscInt *, PetscInt *, PetscInt *);
+PETSC_EXTERN const char    *SPSolverReasonName(SPSolver, SNESConvergedReason);
 PETSC_EXTERN PetscErrorCode SPSolverGetBulkOperator(SPSolver, const char **);
 PETSC_EXTERN PetscErrorCode SPSolverDestroy(SPSolver *);
 

@@ -360,3 +360,17 @@ PetscErrorCode SPContactHasFriction(SPContact c, PetscBool *on)
   *on = c && c->enabled && c->friction ? PETSC_TRUE : PETSC_FALSE;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
+
+/* The contact length scale h_c: the smallest mean slave facet size at a contact point (the mesh
+   size where contact is resolved; a minimum, so the same on any rank count). The gap tolerance is
+   gap_rtol x h_c unless -contact_gap_tol gave an absolute one. Collective, once, after the areas. */
+PetscErrorCode SPContactSetGapTolerance(SPContact c)
+{
+  PetscReal hmin = PETSC_MAX_REAL;
+
+  PetscFunctionBeginUser;
+  for (PetscInt i = 0; i < c->n; ++i) hmin = PetscMin(hmin, c->pt[i].h);
+  PetscCallMPI(MPI_Allreduce(&hmin, &c->lengthScale, 1, MPIU_REAL, MPI_MIN, PetscObjectComm((PetscObject)c->dm)));
+  if (!c->gapTolSet) c->gapTol = c->gapRtol * c->lengthScale;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}

@@ -17,7 +17,7 @@ PetscErrorCode SPContactCreate(DM dm, SPProblem problem, PetscLogEvent search, S
   c->searchEvent = search;
   c->method  = SPMethodTable[0]; /* the table's first row is the default */
   c->alpha   = 10.0;
-  c->gapTol  = 1e-10;
+  c->gapRtol = 1e-10;
   c->creepRtol = 1e-10;
   c->slipRtol  = 1e-8;
   c->maxFlips  = 3;
@@ -126,7 +126,8 @@ PetscErrorCode SPContactSetFromOptions(SPContact c)
   PetscCall(PetscOptionsIntArray("-contact_values", "Label values of the slave boundary", "SPContactSetFromOptions", c->values, &c->nvalues, &setValues));
   PetscCall(PetscOptionsReal("-contact_penalty", "Absolute penalty eps per unit area (stress/length); default: alpha E / h", "SPContactSetFromOptions", c->penalty, &c->penalty, &setPenalty));
   PetscCall(PetscOptionsReal("-contact_alpha", "Penalty factor: eps = alpha E / h, h the mean slave facet size at the point", "SPContactSetFromOptions", c->alpha, &c->alpha, NULL));
-  PetscCall(PetscOptionsReal("-contact_gap_tol", "Methods that update the shift: converged only when no point penetrates more than gap_tol and every active point has |gap| <= gap_tol", "SPContactSetFromOptions", c->gapTol, &c->gapTol, NULL));
+  PetscCall(PetscOptionsReal("-contact_gap_rtol", "Methods that update the shift: converged only when no point penetrates more than gap_rtol x h_c and every active point has |gap| <= gap_rtol x h_c (h_c: the smallest mean slave facet size at a contact point)", "SPContactSetFromOptions", c->gapRtol, &c->gapRtol, NULL));
+  PetscCall(PetscOptionsReal("-contact_gap_tol", "Absolute gap tolerance (a length); overrides -contact_gap_rtol", "SPContactSetFromOptions", c->gapTol, &c->gapTol, &c->gapTolSet));
   PetscCall(PetscOptionsReal("-contact_step_cap", "Newton step control: scale a step so no point penetrates deeper than step_cap x h in one step (0: off)", "SPContactSetFromOptions", c->stepCap, &c->stepCap, NULL));
   PetscCall(PetscOptionsBool("-contact_safeguard", "Update the shift only of points active in both the previous and the new iterate (method.md 4.1); false only to demonstrate chatter", "SPContactSetFromOptions", c->safeguard, &c->safeguard, NULL));
   PetscCall(PetscOptionsBool("-contact_shift_settled", "In-Newton shift update only at iterations whose active set did not change (the contraction rate holds only then)", "SPContactSetFromOptions", c->settled, &c->settled, NULL));
@@ -141,7 +142,8 @@ PetscErrorCode SPContactSetFromOptions(SPContact c)
   PetscCheck(c->creepRtol > 0.0 && c->slipRtol > 0.0, comm, PETSC_ERR_USER_INPUT, "-contact_friction_creep_rtol %g, -contact_friction_slip_rtol %g: must be positive", (double)c->creepRtol, (double)c->slipRtol);
   PetscCheck(!setPenalty || c->penalty > 0.0, comm, PETSC_ERR_USER_INPUT, "-contact_penalty %g: the penalty must be positive", (double)c->penalty);
   PetscCheck(c->alpha > 0.0, comm, PETSC_ERR_USER_INPUT, "-contact_alpha %g: the penalty factor must be positive", (double)c->alpha);
-  PetscCheck(c->gapTol > 0.0, comm, PETSC_ERR_USER_INPUT, "-contact_gap_tol %g: must be positive", (double)c->gapTol);
+  PetscCheck(!c->gapTolSet || c->gapTol > 0.0, comm, PETSC_ERR_USER_INPUT, "-contact_gap_tol %g: must be positive", (double)c->gapTol);
+  PetscCheck(c->gapRtol > 0.0 && c->gapRtol < 1.0, comm, PETSC_ERR_USER_INPUT, "-contact_gap_rtol %g: must be in (0, 1) (a fraction of the contact facet size)", (double)c->gapRtol);
   PetscCheck(c->stepCap >= 0.0, comm, PETSC_ERR_USER_INPUT, "-contact_step_cap %g: must be >= 0 (0 disables the step control)", (double)c->stepCap);
   for (c->nob = 0; c->nob < SP_MAX_OBSTACLES; ++c->nob) {
     char      name[48];
@@ -186,6 +188,7 @@ PetscErrorCode SPContactSetUp(SPContact c)
     PetscCall(SPMeshCreateCompletedLabel(c->dm, c->pair[k].label, c->pair[k].nslave, c->pair[k].slave, "spcontact_slave", &slave));
   PetscCall(SPContactPointsSetUp(c, slave));
   PetscCall(SPContactComputeAreas(c));
+  PetscCall(SPContactSetGapTolerance(c));
   PetscCall(DMCreateGlobalVector(c->dm, &c->Fc));
   PetscCall(VecCreateMPI(comm, c->n * c->dim, PETSC_DETERMINE, &c->fvec));
   PetscCall(VecSetOption(c->fvec, VEC_IGNORE_NEGATIVE_INDICES, PETSC_TRUE));
@@ -372,7 +375,7 @@ static PetscErrorCode ViewSetUp(SPContact c, PetscViewer v)
   }
   PetscCall(PetscViewerASCIIPrintf(v, "contact_alpha %g\n", c->penalty > 0.0 ? 0.0 : (double)c->alpha));
   PetscCall(PetscViewerASCIIPrintf(v, "contact_eps_min %.10e\ncontact_eps_max %.10e\n", (double)gmin, (double)gmax));
-  PetscCall(PetscViewerASCIIPrintf(v, "contact_gap_tol %g\n", (double)c->gapTol));
+  PetscCall(PetscViewerASCIIPrintf(v, "contact_length_scale %.10e\ncontact_gap_rtol %g\ncontact_gap_tol %.6e\n", (double)c->lengthScale, c->gapTolSet ? 0.0 : (double)c->gapRtol, (double)c->gapTol));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -1,10 +1,12 @@
 /* Load stepping: the load factor goes 1/N, 2/N, ..., 1 and scales Neumann loads, Dirichlet values
    and obstacle motion; shifts carry over. Inside a step, methods that update their shifts after a
    converged solve (augmented Lagrangian) repeat the solve until their update is done or its budget
-   is spent. A step that fails either way is halved (bounded), then the run stops with a clear
-   message; converged steps keep their output. After every written step the restart data goes into
-   the h5 and a pending SIGTERM/SIGINT (signals.c) stops the run there, on every rank. A restarted
-   run (-restart) starts from the step, load factor and increment SPRestartLoad restored. */
+   is spent. A step that fails either way is halved, within a budget of cut-backs and above a floor
+   on the increment; past either, or past the wall-time limit (checked before every step), the run
+   stops with a one-line reason; converged steps keep their output. After every written step the
+   restart data goes into the h5 and a pending SIGTERM/SIGINT (signals.c) stops the run there, on
+   every rank. A restarted run (-restart) starts from the step, load factor and increment
+   SPRestartLoad restored. */
 #include <spcontact-impl.h>
 
 static PetscErrorCode SolveStep(SPApp app, PetscReal load, PetscInt step, Vec ubackup, PetscBool *ok)
@@ -28,7 +30,7 @@ static PetscErrorCode SolveStep(SPApp app, PetscReal load, PetscInt step, Vec ub
   }
   *ok = reason > 0 ? PETSC_TRUE : PETSC_FALSE;
   if (!*ok) {
-    PetscCall(PetscPrintf(app->comm, "load step %" PetscInt_FMT " (load factor %g): solve did not converge (%s)\n", step, (double)load, SNESConvergedReasons[reason]));
+    PetscCall(PetscPrintf(app->comm, "load step %" PetscInt_FMT " (load factor %g): solve did not converge (%s)\n", step, (double)load, SPSolverReasonName(app->solver, reason)));
     PetscCall(VecCopy(ubackup, app->u));
     PetscCall(SPContactRestoreState(app->contact));
   }
@@ -53,11 +55,28 @@ static PetscErrorCode Interrupted(SPApp app, PetscBool *stop)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Why the run must stop before attempting load factor `load` after a failure (ok false) or at a
+   safe point (ok true): the wall time, the cut-back budget, the cut-back floor. NULL: go on. */
+static PetscErrorCode StopReason(SPApp app, PetscBool ok, PetscReal inc, char why[], size_t len, PetscBool *stop)
+{
+  PetscLogDouble t;
+
+  PetscFunctionBeginUser;
+  *stop = PETSC_TRUE;
+  PetscCall(PetscTime(&t));
+  PetscCallMPI(MPI_Bcast(&t, 1, MPI_DOUBLE, 0, app->comm)); /* one decision on every rank */
+  if (app->maxWallTime > 0.0 && t - app->t0 > app->maxWallTime) PetscCall(PetscSNPrintf(why, len, "wall time %.1f s exceeds -max_wall_time %g", (double)(t - app->t0), (double)app->maxWallTime));
+  else if (!ok && app->cutbacks >= app->maxCutbacks) PetscCall(PetscSNPrintf(why, len, "cut-back budget spent (%" PetscInt_FMT " cut-backs, -load_max_cutbacks)", app->cutbacks));
+  else if (!ok && 0.5 * inc < app->minIncrement) PetscCall(PetscSNPrintf(why, len, "halving the increment %g would go below -load_min_increment %g", (double)inc, (double)app->minIncrement));
+  else *stop = PETSC_FALSE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode SPLoadingRun(SPApp app)
 {
   PetscReal done = 0.0, inc = 1.0 / app->loadSteps;
-  PetscInt  step = 0, cuts = 0;
-  PetscBool halt;
+  PetscInt  step = 0;
+  PetscBool halt = PETSC_FALSE;
   Vec       ubackup;
 
   PetscFunctionBeginUser;
@@ -66,32 +85,33 @@ PetscErrorCode SPLoadingRun(SPApp app)
   if (app->restartFile[0]) done = app->loadReached, inc = app->loadInc, step = app->stepsDone; /* SPRestartLoad */
   while (done < 1.0 - 1e-12) {
     PetscReal load = PetscMin(1.0, done + inc);
-    PetscBool ok = PETSC_FALSE;
-    PetscCall(SolveStep(app, load, step + 1, ubackup, &ok));
-    if (!ok) {
-      if (cuts >= app->maxCutbacks) {
-        app->converged = PETSC_FALSE;
-        PetscCall(PetscPrintf(app->comm, "stopping: load factor %g not reached after %" PetscInt_FMT " cut-backs; last converged load factor %g\n", (double)load, cuts, (double)done));
-        break;
-      }
-      cuts++;
-      app->cutbacks++;
-      inc *= 0.5;
-      PetscCall(PetscPrintf(app->comm, "cutting back: load increment halved to %g\n", (double)inc));
+    PetscBool ok = PETSC_TRUE, stop;
+    char      why[256];
+    PetscCall(StopReason(app, ok, inc, why, sizeof(why), &stop));
+    if (!stop) PetscCall(SolveStep(app, load, step + 1, ubackup, &ok));
+    if (ok && !stop) {
+      done = load;
+      step++;
+      PetscCall(SPContactCommitStep(app->contact, app->u));
+      PetscCall(PetscLogStagePush(app->log.output)); /* stage times are exclusive: output leaves "SP solve" */
+      PetscCall(SPOutputWriteStep(app->output, app->problem, app->u, app->contact));
+      PetscCall(PetscLogStagePop());
+      PetscCall(SPContactReportStep(app->contact, app->u, step, load));
+      app->stepsDone = step, app->loadReached = done;
+      PetscCall(SPRestartWriteStep(app, inc));
+      PetscCall(Interrupted(app, &halt));
+      if (halt) break;
       continue;
     }
-    done = load;
-    step++;
-    cuts = 0;
-    PetscCall(SPContactCommitStep(app->contact, app->u));
-    PetscCall(PetscLogStagePush(app->log.output)); /* stage times are exclusive: output leaves "SP solve" */
-    PetscCall(SPOutputWriteStep(app->output, app->problem, app->u, app->contact));
-    PetscCall(PetscLogStagePop());
-    PetscCall(SPContactReportStep(app->contact, app->u, step, load));
-    app->stepsDone = step, app->loadReached = done;
-    PetscCall(SPRestartWriteStep(app, inc));
-    PetscCall(Interrupted(app, &halt));
-    if (halt) break;
+    if (!stop) PetscCall(StopReason(app, ok, inc, why, sizeof(why), &stop));
+    if (stop) {
+      app->converged = PETSC_FALSE;
+      PetscCall(PetscPrintf(app->comm, "stopping: load factor %g not reached: %s; last converged load factor %g\n", (double)load, why, (double)done));
+      break;
+    }
+    app->cutbacks++;
+    inc *= 0.5;
+    PetscCall(PetscPrintf(app->comm, "cutting back: load increment halved to %g\n", (double)inc));
   }
   app->stepsDone   = step;
   app->loadReached = done;

@@ -14,7 +14,7 @@
 #include <hdf5.h>
 #include <stdlib.h>
 
-#define NCOUNT 19 /* reals per rank in /restart/counters */
+#define NCOUNT 20 /* reals per rank in /restart/counters */
 
 /* A plain (DM-less) copy of the layout of n local reals with block size bs: VecView writes it raw */
 static PetscErrorCode PlainVec(MPI_Comm comm, PetscInt n, PetscInt bs, const char name[], Vec *v)
@@ -33,7 +33,7 @@ static void Counters(PetscBool pack, SPApp a, PetscReal *inc, PetscReal b[])
 {
   SPSolver  s = a->solver;
   SPContact c = a->contact;
-  PetscReal v[NCOUNT] = {a->loadReached, *inc, (PetscReal)a->stepsDone, (PetscReal)a->cutbacks, (PetscReal)s->newtonTotal, (PetscReal)s->linearTotal, (PetscReal)s->funcTotal, (PetscReal)c->evaluations, (PetscReal)c->stepLimits, (PetscReal)c->shiftUpdates, (PetscReal)c->exchanges, (PetscReal)c->received, (PetscReal)c->rebuilds, (PetscReal)c->stats.augmentations, (PetscReal)c->centreSet, c->centre[0], c->centre[1], c->centre[2], (PetscReal)c->exchangeTime};
+  PetscReal v[NCOUNT] = {a->loadReached, *inc, (PetscReal)a->stepsDone, (PetscReal)a->cutbacks, (PetscReal)s->newtonTotal, (PetscReal)s->linearTotal, (PetscReal)s->funcTotal, (PetscReal)c->evaluations, (PetscReal)c->stepLimits, (PetscReal)c->shiftUpdates, (PetscReal)c->exchanges, (PetscReal)c->received, (PetscReal)c->rebuilds, (PetscReal)c->stats.augmentations, (PetscReal)c->centreSet, c->centre[0], c->centre[1], c->centre[2], (PetscReal)c->exchangeTime, s->fscale};
 
   if (pack) {
     for (PetscInt k = 0; k < NCOUNT; ++k) b[k] = v[k];
@@ -46,6 +46,7 @@ static void Counters(PetscBool pack, SPApp a, PetscReal *inc, PetscReal b[])
   c->stats.augmentations = (PetscInt)b[13], c->centreSet = b[14] != 0.0 ? PETSC_TRUE : PETSC_FALSE;
   for (PetscInt d = 0; d < 3; ++d) c->centre[d] = b[15 + d];
   c->exchangeTime = b[18];
+  s->fscale       = b[19]; /* the residual tolerance's scale: the largest initial |F| of the run */
 }
 
 /* The run's identity, as attributes of /restart: written with the first step, compared on restart */

@@ -248,13 +248,43 @@ static PetscErrorCode LogIteration(SPSolver s, PetscInt it, PetscReal fnorm)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Stagnation: progress is a new lowest residual or gap error (by more than 1%) in this solve;
+   stallIts iterations without it stop the solve (an active-set cycle, a shift update that no
+   longer reduces the gap) instead of iterating to -snes_max_it */
+static PetscErrorCode CheckStall(SPSolver s, PetscInt it, PetscReal fnorm, SNESConvergedReason *reason)
+{
+  SPContactStats st = {0};
+  PetscBool      on;
+
+  PetscFunctionBeginUser;
+  PetscCall(SPContactIsActive(s->contact, &on));
+  if (on) PetscCall(SPContactGetIterationStats(s->contact, &st));
+  if (it == 0) { /* the initial iterate is no reference: first contact raises |F| and the gap error */
+    s->bestF = s->bestGap = PETSC_MAX_REAL;
+    s->sinceProgress      = 0;
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  if (fnorm < 0.99 * s->bestF || st.gapError < 0.99 * s->bestGap) s->sinceProgress = 0;
+  else s->sinceProgress++;
+  s->bestF   = PetscMin(s->bestF, fnorm);
+  s->bestGap = PetscMin(s->bestGap, on ? st.gapError : 0.0);
+  if (s->stallIts <= 0 || s->sinceProgress < s->stallIts || *reason != SNES_CONVERGED_ITERATING) PetscFunctionReturn(PETSC_SUCCESS);
+  s->stalled = PETSC_TRUE;
+  *reason    = SNES_DIVERGED_DTOL;
+  PetscCall(PetscPrintf(PetscObjectComm((PetscObject)s->dm), "solve stalled: neither the residual (lowest %.3e) nor the gap error (lowest %.3e) decreased in %" PetscInt_FMT " Newton iterations (-solver_stall_its)\n", (double)s->bestF, (double)s->bestGap, s->stallIts));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscErrorCode Converged(SNES snes, PetscInt it, PetscReal xnorm, PetscReal snorm, PetscReal fnorm, SNESConvergedReason *reason, void *ctx)
 {
   SPSolver  s = (SPSolver)ctx;
   PetscBool on, ok;
 
   PetscFunctionBeginUser;
+  if (it == 0) s->fscale = PetscMax(s->fscale, fnorm);
   PetscCall(SNESConvergedDefault(snes, it, xnorm, snorm, fnorm, reason, NULL));
+  /* before the short-step test, which SNESConvergedDefault checks after its own atol */
+  if (!s->userAtol && (*reason == SNES_CONVERGED_ITERATING || *reason == SNES_CONVERGED_SNORM_RELATIVE) && fnorm <= s->atolRel * s->fscale) *reason = SNES_CONVERGED_FNORM_ABS;
   PetscCall(LogIteration(s, it, fnorm));
   PetscCall(SPContactIsActive(s->contact, &on));
   if (on && *reason > 0) {
@@ -262,6 +292,7 @@ static PetscErrorCode Converged(SNES snes, PetscInt it, PetscReal xnorm, PetscRe
     PetscCall(SPContactConverged(s->contact, &ok));
     if (!ok || *reason == SNES_CONVERGED_SNORM_RELATIVE) *reason = SNES_CONVERGED_ITERATING;
   }
+  PetscCall(CheckStall(s, it, fnorm, reason));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -295,7 +326,10 @@ PetscErrorCode SPSolverCreate(DM dm, SPProblem problem, SPContact contact, SPLog
   PetscCall(SNESSetDM(s->snes, dm));
   PetscCall(SNESSetFunction(s->snes, s->r, FormFunction, s));
   PetscCall(SNESSetConvergenceTest(s->snes, Converged, s, NULL));
-  PetscCall(SNESSetTolerances(s->snes, 1e-12, 1e-9, PETSC_DEFAULT, 50, PETSC_DEFAULT));
+  /* no absolute atol: it is atolRel x the run's largest initial residual (Converged) */
+  PetscCall(SNESSetTolerances(s->snes, 0.0, 1e-9, PETSC_DEFAULT, 50, PETSC_DEFAULT));
+  s->atolRel  = 1e-10;
+  s->stallIts = 15;
   /* a load-controlled body touching at one point legitimately raises |F| at first */
   PetscCall(SNESSetDivergenceTolerance(s->snes, -1.0));
   PetscCall(SNESGetKSP(s->snes, &ksp));
@@ -343,8 +377,13 @@ PetscErrorCode SPSolverSetFromOptions(SPSolver s)
   PetscCall(PetscOptionsBool("-solver_linear_reuse", "Linear material: assemble the bulk stiffness K once and use r(u) = r0(load) + K u (false: bulk residual/Jacobian every time)", "SPSolverSetFromOptions", s->reuse, &s->reuse, NULL));
   PetscCall(PetscOptionsBool("-solver_fast_bulk", "Element-level isotropic elasticity for P1/Q1 cells instead of PetscFE where it applies (false: always PetscFE)", "SPSolverSetFromOptions", fast, &fast, NULL));
   PetscCall(PetscOptionsBool("-solver_check_fast", "Verification: compare the fast and the PetscFE bulk residual/Jacobian (and the matrix pattern with DMCreateMatrix's) once, print the relative differences", "SPSolverSetFromOptions", s->checkFast, &s->checkFast, NULL));
+  PetscCall(PetscOptionsReal("-solver_atol_rel", "Absolute residual tolerance relative to the largest initial residual norm of the run (the out-of-balance load); -snes_atol replaces it by an absolute one", "SPSolverSetFromOptions", s->atolRel, &s->atolRel, NULL));
+  PetscCall(PetscOptionsInt("-solver_stall_its", "Stop a Newton solve after this many iterations without a 1% decrease of the residual or the gap error (0: never)", "SPSolverSetFromOptions", s->stallIts, &s->stallIts, NULL));
   PetscCall(PetscOptionsBool("-solver_fast_prealloc", "First-order mesh: preallocate the matrix from vertex adjacency and build the rigid-body modes from vertex coordinates (false: DMCreateMatrix, DMPlexCreateRigidBody)", "SPSolverSetFromOptions", prealloc, &prealloc, NULL));
   PetscOptionsEnd();
+  PetscCheck(s->atolRel >= 0.0 && s->atolRel < 1.0, PetscObjectComm((PetscObject)s->dm), PETSC_ERR_USER_INPUT, "-solver_atol_rel %g: must be in [0, 1)", (double)s->atolRel);
+  PetscCheck(s->stallIts >= 0, PetscObjectComm((PetscObject)s->dm), PETSC_ERR_USER_INPUT, "-solver_stall_its %" PetscInt_FMT ": must be >= 0 (0: no stagnation test)", s->stallIts);
+  PetscCall(PetscOptionsHasName(NULL, NULL, "-snes_atol", &s->userAtol));
   PetscCall(SetUpMatrix(s, prealloc));
   if (fast) {
     PetscCall(PetscLogEventBegin(s->log->fastSetUp, 0, 0, 0, 0));
@@ -395,6 +434,7 @@ PetscErrorCode SPSolverSolve(SPSolver s, Vec u, SNESConvergedReason *reason)
   }
   PetscCall(SPContactIsActive(s->contact, &on));
   if (on) PetscCall(SPContactBeginSolve(s->contact, u));
+  s->stalled = PETSC_FALSE;
   PetscCall(SNESSolve(s->snes, NULL, u));
   PetscCall(SNESGetConvergedReason(s->snes, reason));
   PetscCall(SNESGetIterationNumber(s->snes, &its));
@@ -404,6 +444,12 @@ PetscErrorCode SPSolverSolve(SPSolver s, Vec u, SNESConvergedReason *reason)
   s->linearTotal += lits;
   s->funcTotal += nf;
   PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The name of a solve's stop reason for messages: STALLED for the stagnation test */
+const char *SPSolverReasonName(SPSolver s, SNESConvergedReason reason)
+{
+  return s->stalled ? "STALLED" : SNESConvergedReasons[reason];
 }
 
 PetscErrorCode SPSolverGetCounts(SPSolver s, PetscInt *newton, PetscInt *linear, PetscInt *functions)

@@ -1,0 +1,131 @@
+# Tolerances and units (README "Tolerances and units"): the same Hertz case in three consistent unit
+# systems gives the same Newton counts and relative figures; the two-material patch test meets its
+# bound at E ratios 1 and 10 with the default (relative) gap tolerance; the cut-back floor, the
+# stagnation test and the wall-time limit each stop a run with one line naming the cause.
+# Helpers are prefixed un_ so they cannot collide with other case files.
+
+# B2 (input/hertz2d.opts: R = 1, E = 1, nu = 0.3, pressure 0.005 on the top edge) in unit systems
+# "name|options": lengths scaled by L (-dm_plex_scale), stresses by S (E and the pressure); the
+# rigid-plane Hertz figures scale as b x L, p0 x S (b = 0.107641, p0 = 0.0591431).
+UN_SYSTEMS="base|1|1|
+mm-N-MPa (steel, R = 10 mm)|10|210000|-dm_plex_scale 10 -material_E 210000 -bc_1_value 1050
+m-N-Pa (steel, R = 0.01 m)|0.01|2.1e11|-dm_plex_scale 0.01 -material_E 2.1e11 -bc_1_value 1.05e9
+scaled (L = 1000, S = 1e-3)|1000|1e-3|-dm_plex_scale 1000 -material_E 1e-3 -bc_1_value 5e-6"
+
+# un_rel OUT L S : "penetration/b pressure_error" of a run in a system of length L and stress S
+un_rel() {
+  awk -v pen="$(sval "$1" contact_max_penetration)" -v pk="$(sval "$1" contact_peak_pressure)" -v L="$2" -v S="$3" \
+    'BEGIN { e = pk / (0.0591431 * S) - 1; if (e < 0) e = -e; printf "%.6e %.6e\n", pen / (0.107641 * L), e }'
+}
+
+# un_within10 NAME VALUE REF : VALUE within a factor 10 of REF (both > 0; equal zeros pass)
+un_within10() {
+  awk -v n="$1" -v v="$2" -v r="$3" 'BEGIN { ok = (v == r) || (v > 0 && r > 0 && v <= 10 * r && r <= 10 * v)
+    printf "%s: %.4g vs base %.4g (within 10x) %s\n", n, v, r, ok ? "ok" : "FAILED"; exit !ok }'
+}
+
+un_hertz() {
+  local np=$1 rc=0 m name L S args out k=0 base_n base_pen base_err rel n
+  for m in penalty shifted alm; do
+    k=0
+    while IFS='|' read -r name L S args; do
+      k=$((k + 1)); out=$CASE_DIR/${m}_${k}_np$np.txt
+      # shellcheck disable=SC2086
+      spc "$out" "$np" -options_file input/hertz2d.opts -contact_method $m -output_dir "$CASE_DIR" -output_name "${m}_$k" -output_fields false $args </dev/null || { echo "$m $name: run failed"; rc=1; continue; }
+      n=$(sval "$out" newton_iterations); rel=$(un_rel "$out" "$L" "$S")
+      echo "np $np $m $name: newton $n penetration/b ${rel% *} pressure_error ${rel#* } gap_tol $(sval "$out" contact_gap_tol)"
+      if [ $k -eq 1 ]; then base_n=$n; base_pen=${rel% *}; base_err=${rel#* }; continue; fi
+      assert_close "newton_${m}_$k" "$n" "$base_n" 0 1 || rc=1
+      un_within10 "penetration_over_b_${m}_$k" "${rel% *}" "$base_pen" || rc=1
+      un_within10 "pressure_error_${m}_$k" "${rel#* }" "$base_err" || rc=1
+    done <<<"$UN_SYSTEMS"
+  done
+  return $rc
+}
+
+test_units_hertz_np1() { un_hertz 1; }
+test_units_hertz_np2() { un_hertz 2; }
+
+# Two-material patch test (input/patch_4_5_materials.opts, no gap tolerance given): stiff block
+# E = 1 and 10 against the soft one (E = 1): force q to 1e-8, pressure q at every point to 1e-6
+test_units_patch_materials() {
+  local rc=0 np E out dev
+  for np in 1 2; do
+    for E in 1 10; do
+      out=$CASE_DIR/E${E}_np$np.txt
+      spc "$out" "$np" -options_file input/patch_4_5_materials.opts -material_1_E "$E" -output_dir "$CASE_DIR" -output_name "E${E}_np$np" || { echo "E $E np $np: run failed"; rc=1; continue; }
+      dev=$(awk -F, -v q=0.01 'NR>1 { d = ($8 - q) / q; if (d < 0) d = -d; if (d > m) m = d } END { printf "%.3e\n", m }' "$CASE_DIR/E${E}_np${np}_contact.csv")
+      echo "E ratio $E np $np: newton $(sval "$out" newton_iterations) gap_rtol $(sval "$out" contact_gap_rtol) gap_tol $(sval "$out" contact_gap_tol) pressure_deviation $dev"
+      assert_ge "gap_rtol_in_use_E$E" "$(sval "$out" contact_gap_rtol)" 1e-300 || rc=1
+      assert_close "contact_force_E${E}_np$np" "$(sval "$out" contact_force_y)" 0.01 1e-8 || rc=1
+      assert_le "pressure_deviation_E${E}_np$np" "$dev" 1e-6 || rc=1
+    done
+  done
+  return $rc
+}
+
+# Cut-back floor: B2 with 2 Newton iterations per solve never converges; increments 1, 0.5, 0.25
+# fail, halving 0.25 would go below -load_min_increment 0.2: exactly 2 cut-backs, one stop line
+test_units_cutback_floor() {
+  local out=$CASE_DIR/run.txt code rc=0
+  spc "$out" 1 -options_file input/hertz2d.opts -output_dir "$CASE_DIR" -snes_max_it 2 -load_min_increment 0.2; code=$?
+  grep -E "^(stopping|cutting)" "$out"
+  assert_eq exit_code "$code" 2 || rc=1
+  assert_eq cutbacks "$(sval "$out" cutbacks)" 2 || rc=1
+  assert_eq stop_lines "$(grep -c '^stopping: load factor 0.25 not reached: halving the increment 0.25 would go below -load_min_increment 0.2' "$out")" 1 || rc=1
+  # the budget: -load_max_cutbacks 1 stops after one cut-back whatever the floor
+  spc "$CASE_DIR/budget.txt" 1 -options_file input/hertz2d.opts -output_dir "$CASE_DIR" -output_name budget -snes_max_it 2 -load_max_cutbacks 1; code=$?
+  assert_eq exit_code_budget "$code" 2 || rc=1
+  assert_eq cutbacks_budget "$(sval "$CASE_DIR/budget.txt" cutbacks)" 1 || rc=1
+  assert_eq budget_line "$(grep -c '^stopping: .*cut-back budget spent (1 cut-backs, -load_max_cutbacks)' "$CASE_DIR/budget.txt")" 1 || rc=1
+  return $rc
+}
+
+# The two-pass curved stall (issue 12): two-pass shifted on the two-body Hertz case. alpha 100
+# converges; at alpha 1000 the semismooth Newton iteration cycles between two active sets (period
+# 2, ~19 points flip, the shift never updates): the stagnation test stops each solve after
+# -solver_stall_its iterations without progress with one line naming the stall, and the cut-back
+# budget ends the run: both solves end STALLED, before -snes_max_it (50) each.
+test_units_twopass_stall() {
+  local out rc=0 code n
+  out=$CASE_DIR/a100.txt
+  spc "$out" 1 -options_file input/hertz2d_twobody.opts -contact_two_pass -contact_alpha 100 -output_dir "$CASE_DIR" -output_name a100 -output_fields false; code=$?
+  echo "alpha 100: exit $code converged $(sval "$out" converged) newton $(sval "$out" newton_iterations)"
+  assert_eq converged_alpha100 "$(sval "$out" converged)" yes || rc=1
+  assert_close force_alpha100 "$(sval "$out" contact_force_y)" 0.005 1e-8 || rc=1
+  out=$CASE_DIR/a1000.txt
+  spc "$out" 1 -options_file input/hertz2d_twobody.opts -contact_two_pass -contact_alpha 1000 -load_max_cutbacks 1 -output_dir "$CASE_DIR" -output_name a1000 -output_fields false; code=$?
+  grep -E "^(solve stalled|stopping|load step)" "$out"
+  n=$(sval "$out" newton_iterations)
+  assert_eq exit_code_alpha1000 "$code" 2 || rc=1
+  assert_eq stall_lines "$(grep -c '^solve stalled: neither the residual .* nor the gap error .* decreased in 15 Newton iterations (-solver_stall_its)' "$out")" 2 || rc=1
+  assert_eq stalled_reason "$(grep -c 'solve did not converge (STALLED)' "$out")" 2 || rc=1
+  assert_eq cutbacks "$(sval "$out" cutbacks)" 1 || rc=1
+  assert_le newton_bounded "$n" 98 || rc=1
+  return $rc
+}
+
+# Wall time: a limit already passed when the first load step would start stops the run there with
+# one line, exit 2, no step done (no timing is asserted: any setup takes longer than 1 microsecond)
+test_units_wall_time() {
+  local out=$CASE_DIR/run.txt code rc=0
+  spc "$out" 1 -options_file input/hertz2d.opts -output_dir "$CASE_DIR" -load_steps 3 -max_wall_time 1e-6; code=$?
+  grep "^stopping" "$out"
+  assert_eq exit_code "$code" 2 || rc=1
+  assert_eq load_steps "$(sval "$out" load_steps)" 0 || rc=1
+  assert_eq stop_lines "$(grep -c '^stopping: load factor 0.333333 not reached: wall time .* s exceeds -max_wall_time 1e-06; last converged load factor 0' "$out")" 1 || rc=1
+  return $rc
+}
+
+test_units_bad_input() {
+  bad_input_cases <<'CASES'
+gap rtol 0|input/hertz2d.opts|-contact_gap_rtol 0
+gap rtol >= 1|input/hertz2d.opts|-contact_gap_rtol 2
+gap tol <= 0|input/hertz2d.opts|-contact_gap_tol -1
+min increment 0|input/hertz2d.opts|-load_min_increment 0
+min increment > 1|input/hertz2d.opts|-load_min_increment 1.5
+wall time < 0|input/hertz2d.opts|-max_wall_time -1
+atol rel < 0|input/hertz2d.opts|-solver_atol_rel -1
+stall its < 0|input/hertz2d.opts|-solver_stall_its -2
+CASES
+}
