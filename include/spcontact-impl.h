@@ -341,7 +341,7 @@ struct _n_SPApp {
   SPOutput  output;
   Vec       u;
   PetscInt  loadSteps, maxCutbacks, stepsDone, cutbacks;
-  PetscBool converged;
+  PetscBool converged, quiet; /* quiet: no progress line per load step */
   PetscReal loadReached;
   PetscLogDouble t0;
 };

@@ -115,6 +115,7 @@ PETSC_EXTERN PetscErrorCode SPSolverDestroy(SPSolver *);
 
 /* loading.c */
 PETSC_EXTERN PetscErrorCode SPLoadingRun(SPApp);
+PETSC_EXTERN PetscErrorCode SPLogProgress(SPApp, PetscInt, PetscReal, PetscInt, PetscInt);
 
 /* output.c */
 PETSC_EXTERN PetscErrorCode SPOutputCreate(DM, SPOutput *);

@@ -21,6 +21,7 @@ static PetscErrorCode LoadingSetFromOptions(SPApp a)
   PetscFunctionBeginUser;
   PetscOptionsBegin(a->comm, NULL, "Loading options", "spcontact");
   PetscCall(PetscOptionsInt("-load_steps", "Number of load steps (load factor k/N scales loads, Dirichlet values, obstacle motion)", "SPAppSetUp", a->loadSteps, &a->loadSteps, NULL));
+  PetscCall(PetscOptionsBool("-quiet", "No progress line per load step on stdout (the summary is still printed)", "SPAppSetUp", a->quiet, &a->quiet, NULL));
   PetscCall(PetscOptionsInt("-load_max_cutbacks", "Times a failing load increment is halved before the run stops", "SPAppSetUp", a->maxCutbacks, &a->maxCutbacks, NULL));
   PetscOptionsEnd();
   PetscCheck(a->loadSteps >= 1, a->comm, PETSC_ERR_USER_INPUT, "-load_steps %" PetscInt_FMT ": need at least one load step", a->loadSteps);

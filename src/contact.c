@@ -197,7 +197,8 @@ PetscErrorCode SPContactSetUp(SPContact c)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Vertex fields for output: pressure, gap, shift, active on the vertex DM of `pressure` */
+/* Vertex fields for output: pressure, gap, shift, active on the vertex DM of `pressure`; gap is NaN
+   on vertices that are not contact points or have no projection (no gap exists there) */
 PetscErrorCode SPContactGetFields(SPContact c, Vec X, Vec pressure, Vec gap, Vec shift, Vec active)
 {
   DM           dmS;
@@ -212,7 +213,7 @@ PetscErrorCode SPContactGetFields(SPContact c, Vec X, Vec pressure, Vec gap, Vec
   PetscCall(DMGetGlobalSection(dmS, &gs));
   PetscCall(VecGetOwnershipRange(pressure, &rstart, NULL));
   PetscCall(VecZeroEntries(pressure));
-  PetscCall(VecZeroEntries(gap));
+  PetscCall(VecSet(gap, (PetscScalar)NAN)); /* no gap where there is no contact point or projection */
   PetscCall(VecZeroEntries(shift));
   PetscCall(VecZeroEntries(active));
   PetscCall(VecGetArray(pressure, &p));
@@ -225,7 +226,7 @@ PetscErrorCode SPContactGetFields(SPContact c, Vec X, Vec pressure, Vec gap, Vec
     PetscCall(PetscSectionGetOffset(gs, pt->vertex, &off));
     off -= rstart;
     p[off]  = pt->press;
-    g[off]  = pt->geo.gap;
+    g[off]  = pt->geo.elem != SP_ELEM_NONE ? pt->geo.gap : (PetscReal)NAN;
     sh[off] = pt->st.sN;
     a[off]  = pt->st.active ? 1.0 : 0.0;
   }

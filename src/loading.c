@@ -37,10 +37,12 @@ PetscErrorCode SPLoadingRun(SPApp app)
 {
   PetscReal done = 0.0, inc = 1.0 / app->loadSteps;
   PetscInt  step = 0, cuts = 0;
+  PetscInt  its0, lits0; /* solver counts before the step, for the progress line */
   Vec       ubackup;
 
   PetscFunctionBeginUser;
   PetscCall(VecDuplicate(app->u, &ubackup));
+  PetscCall(SPSolverGetCounts(app->solver, &its0, &lits0, NULL));
   app->converged = PETSC_TRUE;
   while (done < 1.0 - 1e-12) {
     PetscReal load = PetscMin(1.0, done + inc);
@@ -66,6 +68,8 @@ PetscErrorCode SPLoadingRun(SPApp app)
     PetscCall(SPOutputWriteStep(app->output, app->problem, app->u, app->contact));
     PetscCall(PetscLogStagePop());
     PetscCall(SPContactReportStep(app->contact, app->u, step, load));
+    PetscCall(SPLogProgress(app, step, load, its0, lits0));
+    PetscCall(SPSolverGetCounts(app->solver, &its0, &lits0, NULL));
   }
   app->stepsDone   = step;
   app->loadReached = done;
