@@ -31,6 +31,8 @@ static PetscErrorCode LoadingSetFromOptions(SPApp a)
 
 PetscErrorCode SPAppSetUp(SPApp a)
 {
+  PetscBool help;
+
   PetscFunctionBeginUser;
   PetscCall(LoadingSetFromOptions(a));
   PetscCall(PetscLogStagePush(a->log.mesh));
@@ -50,7 +52,8 @@ PetscErrorCode SPAppSetUp(SPApp a)
   PetscCall(DMCreateGlobalVector(a->dm, &a->u));
   PetscCall(PetscObjectSetName((PetscObject)a->u, "displacement"));
   PetscCall(VecSet(a->u, 0.0));
-  PetscCall(SPOutputOpen(a->output));
+  PetscCall(PetscOptionsHasHelp(NULL, &help));
+  if (!help) PetscCall(SPOutputOpen(a->output)); /* -help lists the options and writes no file */
   PetscCall(PetscLogStagePop());
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -148,6 +148,13 @@ PetscErrorCode SPContactSetFromOptions(SPContact c)
     PetscBool has;
     PetscCall(PetscSNPrintf(name, sizeof(name), "-contact_obstacle_%" PetscInt_FMT "_type", c->nob));
     PetscCall(PetscOptionsHasName(NULL, NULL, name, &has));
+    if (!has && c->nob == 0) { /* -help lists the -contact_obstacle_<k>_* family even when unset */
+      PetscBool  help;
+      SPObstacle ob;
+      PetscReal  mu = c->mu;
+      PetscCall(PetscOptionsHasHelp(NULL, &help));
+      if (help) PetscCall(ObstacleSetFromOptions(comm, 0, c->dim, &ob, &mu)); /* defaults: valid */
+    }
     if (!has) break;
     c->obMu[c->nob] = c->mu;
     PetscCall(ObstacleSetFromOptions(comm, c->nob, c->dim, &c->ob[c->nob], &c->obMu[c->nob]));

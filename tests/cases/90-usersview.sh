@@ -21,3 +21,29 @@ test_progress_line() {
   assert_eq quiet_summary "$(sval "$CASE_DIR/quiet.txt" converged)" yes || rc=1
   return $rc
 }
+
+# Every option name the code reads (a "-name" literal in a PetscOptions* call in src/) is listed
+# by a bare `spcontact -help` (no options file: the indexed families appear with index 0), and is
+# in the README's option reference; -help exits 0 and writes no file.
+test_help_complete() {
+  local rc=0 names missing=0 o
+  names=$(grep -rhoE 'PetscOptions[A-Za-z]+\((NULL, *[A-Za-z"_]*, *|PetscOptionsObject, *)?"-[A-Za-z0-9_]+"' src/ |
+          grep -oE '"-[A-Za-z0-9_]+"' | tr -d '"' | sort -u)
+  echo "option names read in src/: $(echo $names | wc -w)"
+  mkdir -p "$CASE_DIR/run"
+  ( cd "$CASE_DIR/run" && timeout 120 "$OLDPWD/$SPC" -help >../help.txt 2>&1 ); local code=$?
+  RERUN="(cd $CASE_DIR/run && bin/spcontact -help)"
+  assert_eq help_exit_code "$code" 0 || rc=1
+  assert_eq help_files_written "$(find "$CASE_DIR/run" -mindepth 1 | wc -l)" 0 || rc=1
+  spc "$CASE_DIR/help_opts.txt" 1 -options_file input/hertz2d.opts -output_dir "$CASE_DIR/out" -help || rc=1
+  [ ! -e "$CASE_DIR/out" ] && echo "-help with an options file: no output directory ok" || { echo "-help wrote $CASE_DIR/out FAILED"; rc=1; }
+  for o in $names; do
+    grep -qE "^ *(${o}|-[a-z_]+_0_${o#-})[ :]" "$CASE_DIR/help.txt" || { echo "not in -help: $o FAILED"; missing=1; }
+    grep -qE -- "(${o}|_${o#-})\b" README.md || { echo "not in README: $o FAILED"; missing=1; }
+  done
+  for fam in -bc_0_type -contact_obstacle_0_type -contact_pair_0_slave_values -material_0_E; do
+    grep -qE "^ *${fam}[ :]" "$CASE_DIR/help.txt" && echo "family $fam listed ok" || { echo "family $fam FAILED"; missing=1; }
+  done
+  [ $missing -eq 0 ] && echo "every option in -help and README ok" || rc=1
+  return $rc
+}
