@@ -47,3 +47,24 @@ test_help_complete() {
   [ $missing -eq 0 ] && echo "every option in -help and README ok" || rc=1
   return $rc
 }
+
+# scripts/sweep, local mode: a 2 x 2 product on B1 (block2d) gives 4 CSV rows in product order,
+# each with exit code 0 and the summary of a direct run with the same options (displacement_max,
+# newton_iterations); the SLURM scripts pass `bash -n`.
+test_sweep_local() {
+  local rc=0 csv=$CASE_DIR/sw/sweep.csv
+  RERUN="scripts/sweep --out $CASE_DIR/sw input/block2d.opts -contact_method penalty,shifted -contact_alpha 10,100"
+  timeout 600 scripts/sweep --out "$CASE_DIR/sw" input/block2d.opts -contact_method penalty,shifted -contact_alpha 10,100 >"$CASE_DIR/sweep.txt" 2>&1 || { echo "sweep failed"; cat "$CASE_DIR/sweep.txt"; return 1; }
+  cat "$csv" | cut -c1-120
+  assert_eq csv_rows "$(wc -l <"$csv")" 5 || rc=1
+  assert_eq csv_axes "$(head -1 "$csv" | cut -d, -f1-4)" "case,contact_method,contact_alpha,exit_code" || rc=1
+  assert_eq case4_values "$(sed -n 5p "$csv" | cut -d, -f1-4)" '4,"shifted","100",0' || rc=1
+  spc "$CASE_DIR/direct.txt" 1 -options_file input/block2d.opts -contact_method shifted -contact_alpha 100 -output_dir "$CASE_DIR/direct" || rc=1
+  local col
+  for key in displacement_max newton_iterations; do
+    col=$(head -1 "$csv" | tr ',' '\n' | grep -nx "$key" | cut -d: -f1)
+    assert_eq "case4_$key" "$(sed -n 5p "$csv" | cut -d, -f"$col")" "$(sval "$CASE_DIR/direct.txt" "$key")" || rc=1
+  done
+  bash -n scripts/sweep-array.sbatch && bash -n scripts/job.sbatch && echo "sbatch scripts: bash -n ok" || { echo "sbatch syntax FAILED"; rc=1; }
+  return $rc
+}
