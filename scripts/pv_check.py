@@ -22,7 +22,8 @@ def check(ok, msg):
 
 r = OpenDataFile(xmf)
 check(type(r).__name__.startswith("Xdmf3Reader"), "default reader %s is Xdmf3" % type(r).__name__)
-times = list(r.TimestepValues)
+tv = r.TimestepValues  # a float when there is one step
+times = list(tv) if hasattr(tv, "__len__") else [tv]
 check(len(times) == nsteps and abs(times[-1] - 1.0) < 1e-9, "time steps %s: %d, last 1" % (times, nsteps))
 r.UpdatePipeline(times[-1])
 pd = r.PointData
@@ -39,6 +40,14 @@ ColorBy(disp, ("POINTS", "contact_pressure"))
 GetColorTransferFunction("contact_pressure").RescaleTransferFunction(0.0, pmax)
 disp.SetScalarBarVisibility(view, True)
 ResetCamera(view)
+b = r.GetDataInformation().GetBounds()
+if b[5] > b[4]:  # 3D: look at the contact face z = zmin from below, zoomed on the contact patch
+    cx, cy = b[0] + 0.15 * (b[1] - b[0]), b[2] + 0.15 * (b[3] - b[2])
+    view.CameraFocalPoint = [cx, cy, b[4]]
+    view.CameraPosition = [cx, cy, b[4] - 10 * (b[5] - b[4])]
+    view.CameraViewUp = [0, 1, 0]
+    view.CameraParallelProjection = 1
+    view.CameraParallelScale = 0.2 * max(b[1] - b[0], b[3] - b[2])
 SaveScreenshot(png, view, ImageResolution=[800, 600])
 import os
 check(os.path.exists(png) and os.path.getsize(png) > 10000, "rendered %s" % png)

@@ -46,3 +46,7 @@ test_paraview_b2() {
 test_paraview_twobody() {
   pv_case twobody 2 1 displacement:2 contact_pressure:1 gap:1 shift:1 active:1 -- -options_file input/hertz2d_twobody.opts
 }
+
+test_paraview_b3() {
+  pv_case b3 1 2 displacement:3 contact_pressure:1 gap:1 shift:1 active:1 -- -options_file input/hertz3d.opts
+}
