@@ -42,12 +42,12 @@ disp.SetScalarBarVisibility(view, True)
 ResetCamera(view)
 b = r.GetDataInformation().GetBounds()
 if b[5] > b[4]:  # 3D: look at the contact face z = zmin from below, zoomed on the contact patch
-    cx, cy = b[0] + 0.15 * (b[1] - b[0]), b[2] + 0.15 * (b[3] - b[2])
+    cx, cy = b[0] + 0.06 * (b[1] - b[0]), b[2] + 0.06 * (b[3] - b[2])
     view.CameraFocalPoint = [cx, cy, b[4]]
     view.CameraPosition = [cx, cy, b[4] - 10 * (b[5] - b[4])]
     view.CameraViewUp = [0, 1, 0]
     view.CameraParallelProjection = 1
-    view.CameraParallelScale = 0.2 * max(b[1] - b[0], b[3] - b[2])
+    view.CameraParallelScale = 0.12 * max(b[1] - b[0], b[3] - b[2])
 SaveScreenshot(png, view, ImageResolution=[800, 600])
 import os
 check(os.path.exists(png) and os.path.getsize(png) > 10000, "rendered %s" % png)
