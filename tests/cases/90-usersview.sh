@@ -68,3 +68,29 @@ test_sweep_local() {
   bash -n scripts/sweep-array.sbatch && bash -n scripts/job.sbatch && echo "sbatch scripts: bash -n ok" || { echo "sbatch syntax FAILED"; rc=1; }
   return $rc
 }
+
+# scripts/convert-mesh: the B2 gmsh mesh written as Abaqus .inp by meshio (its physical groups as
+# *ELSETs "1", "2", "3", "10"), converted back, runs B2 with the figures of the gmsh original.
+test_convert_mesh_inp() {
+  local rc=0 d=$CASE_DIR
+  "$PYTHON" - "$d/hertz2d.inp" <<'PY' || return 1
+import sys
+import meshio
+import numpy as np
+m = meshio.read("build/mesh/hertz2d.msh")
+phys = m.cell_data["gmsh:physical"]
+sets = {}
+for i in range(len(m.cells)):
+    for t in np.unique(phys[i]):
+        sets.setdefault(str(t), [np.zeros(0, dtype=int) for _ in m.cells])[i] = np.where(phys[i] == t)[0]
+meshio.write(sys.argv[1], meshio.Mesh(m.points[:, :2], [(b.type, b.data) for b in m.cells], cell_sets=sets))
+print("wrote %s with sets %s" % (sys.argv[1], sorted(sets)))
+PY
+  RERUN="scripts/convert-mesh $d/hertz2d.inp $d/hertz2d_conv.msh"
+  scripts/convert-mesh "$d/hertz2d.inp" "$d/hertz2d_conv.msh" || { echo "convert-mesh failed"; return 1; }
+  spc "$d/orig.txt" 1 -options_file input/hertz2d.opts -quiet -output_dir "$d/o" || rc=1
+  spc "$d/conv.txt" 1 -options_file input/hertz2d.opts -mesh_file "$d/hertz2d_conv.msh" -quiet -output_dir "$d/c" || rc=1
+  same_summary "$d/orig.txt" "$d/conv.txt" 1e-10 vertices cells contact_points newton_iterations displacement_max \
+    contact_force_y contact_peak_pressure contact_radius contact_max_penetration || rc=1
+  return $rc
+}
