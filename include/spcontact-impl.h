@@ -285,6 +285,7 @@ PETSC_EXTERN PetscErrorCode SPContactPairsProject(SPContact, PetscInt, PetscInt 
 PETSC_EXTERN PetscErrorCode SPContactPairsDestroy(SPContact);
 PETSC_EXTERN PetscBool      SPContactGeometricTangent(SPContact);
 PETSC_EXTERN PetscErrorCode SPOutputWriteXdmf(SPOutput);
+PETSC_EXTERN PetscErrorCode SPOutputWriteSurfaceXdmf(SPOutput, SPContact);
 
 /* fast-elastic.c: element-level isotropic linear elasticity on first-order cells */
 struct _n_SPFastElastic {

@@ -243,6 +243,7 @@ PetscErrorCode SPOutputClose(SPOutput o, SPContact contact, PetscBool converged)
     if (o->enabled) PetscCall(Rename(comm, o->prefix, "h5"));
   }
   if (o->enabled) PetscCall(SPOutputWriteXdmf(o));
+  if (o->enabled) PetscCall(SPOutputWriteSurfaceXdmf(o, contact));
   (void)contact;
   (void)converged;
   PetscFunctionReturn(PETSC_SUCCESS);

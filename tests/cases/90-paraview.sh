@@ -50,3 +50,41 @@ test_paraview_twobody() {
 test_paraview_b3() {
   pv_case b3 1 2 displacement:3 contact_pressure:1 gap:1 shift:1 active:1 -- -options_file input/hertz3d.opts
 }
+
+# The contact-surface grid <name>-surface.xmf of B2 on 3 ranks: its facets are the arc's segments
+# (every vertex at distance R = 1 from the centre (0,1), 1e-9; as many segments as contact points
+# minus one), and in pvbatch (default reader) it has the contact fields and max pressure = summary.
+test_paraview_surface_grid() {
+  local rc=0 d=$CASE_DIR
+  spc "$d/b2.txt" 3 -options_file input/hertz2d.opts -load_steps 2 -quiet -output_dir "$d" || return 1
+  "$PYTHON" - "$d/hertz2d-surface.xmf" "$(sval "$d/b2.txt" contact_points)" <<'PY' || rc=1
+import sys, os
+import xml.etree.ElementTree as ET
+import h5py
+import numpy as np
+xmf, npts = sys.argv[1], int(sys.argv[2])
+grids = ET.parse(xmf).getroot().findall(".//Grid[@GridType='Uniform']")
+conn = np.array(grids[-1].find("Topology/DataItem").text.split(), dtype=int).reshape(-1, 2)
+X = h5py.File(os.path.join(os.path.dirname(xmf), "hertz2d.h5"), "r")["/geometry/vertices"][()]
+r = np.hypot(X[conn.ravel(), 0], X[conn.ravel(), 1] - 1.0)
+ok1 = len(grids) == 2 and len(conn) == npts - 1
+ok2 = np.max(np.abs(r - 1.0)) <= 1e-9 and len(np.unique(conn)) == npts
+print("surface grid: %d steps, %d segments, %d contact points %s" % (len(grids), len(conn), npts, "ok" if ok1 else "FAILED"))
+print("segment vertices on the arc: max |r - 1| %.2e, %d distinct %s" % (np.max(np.abs(r - 1.0)), len(np.unique(conn)), "ok" if ok2 else "FAILED"))
+sys.exit(0 if ok1 and ok2 else 1)
+PY
+  cat >"$d/surf.py" <<'PY'
+import sys
+from paraview.simple import OpenDataFile
+r = OpenDataFile(sys.argv[1])
+r.UpdatePipeline(r.TimestepValues[-1])
+print("surface %s steps %d arrays %s pmax %.10e" % (type(r).__name__, len(r.TimestepValues), ",".join(sorted(r.PointData.keys())), r.PointData["contact_pressure"].GetRange()[1]))
+sys.stdout.flush()
+PY
+  local got; got=$(timeout 300 pvbatch "$d/surf.py" "$PWD/$d/hertz2d-surface.xmf" 2>/dev/null | grep '^surface')
+  echo "$got"
+  assert_eq surface_reader "$(echo "$got" | cut -d' ' -f1-5)" "surface Xdmf3ReaderS steps 2 arrays" || rc=1
+  assert_eq surface_arrays "$(echo "$got" | awk '{print $6}')" active,contact_pressure,gap,shift || rc=1
+  assert_close surface_max_pressure "$(echo "$got" | awk '{print $8}')" "$(sval "$d/b2.txt" contact_peak_pressure)" 1e-9 || rc=1
+  return $rc
+}
