@@ -300,6 +300,7 @@ PETSC_EXTERN PetscErrorCode SPContactPairsProject(SPContact, PetscInt, PetscInt 
 PETSC_EXTERN PetscErrorCode SPContactPairsDestroy(SPContact);
 PETSC_EXTERN PetscBool      SPContactGeometricTangent(SPContact);
 PETSC_EXTERN PetscErrorCode SPOutputWriteXdmf(SPOutput, PetscBool);
+PETSC_EXTERN PetscErrorCode SPOutputWriteSurfaceXdmf(SPOutput, SPContact, PetscBool, PetscBool *);
 
 /* fast-elastic.c: element-level isotropic linear elasticity on first-order cells */
 struct _n_SPFastElastic {
@@ -381,7 +382,7 @@ struct _n_SPApp {
   Vec       u;
   PetscInt  loadSteps, maxCutbacks, stepsDone, cutbacks;
   PetscReal minIncrement, maxWallTime; /* cut-back floor (load factor); seconds (0: none) */
-  PetscBool converged;
+  PetscBool converged, quiet; /* quiet: no progress line per load step */
   PetscReal loadReached;
   PetscLogDouble t0;
   SPSignals signals;

@@ -116,6 +116,7 @@ PETSC_EXTERN PetscErrorCode SPSolverDestroy(SPSolver *);
 
 /* loading.c */
 PETSC_EXTERN PetscErrorCode SPLoadingRun(SPApp);
+PETSC_EXTERN PetscErrorCode SPLogProgress(SPApp, PetscInt, PetscReal, PetscInt, PetscInt);
 
 /* output.c */
 PETSC_EXTERN PetscErrorCode SPOutputCreate(DM, SPOutput *);
@@ -123,7 +124,7 @@ PETSC_EXTERN PetscErrorCode SPOutputSetFromOptions(SPOutput);
 PETSC_EXTERN PetscErrorCode SPOutputOpen(SPOutput);
 PETSC_EXTERN PetscErrorCode SPOutputWriteStep(SPOutput, SPProblem, Vec, SPContact);
 PETSC_EXTERN PetscErrorCode SPOutputGetHistoryFile(SPOutput, FILE **);
-PETSC_EXTERN PetscErrorCode SPOutputClose(SPOutput, const char[], PetscInt, PetscReal);
+PETSC_EXTERN PetscErrorCode SPOutputClose(SPOutput, SPContact, const char[], PetscInt, PetscReal);
 PETSC_EXTERN PetscErrorCode SPOutputGetPointsFile(SPOutput, char[], size_t);
 PETSC_EXTERN PetscErrorCode SPOutputGetPrefix(SPOutput, const char **);
 PETSC_EXTERN PetscErrorCode SPOutputDestroy(SPOutput *);

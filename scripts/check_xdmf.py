@@ -80,6 +80,13 @@ class Checker:
             self.report(False, "%s: HDF DataItem text %r is not FILE.h5:/path" % (where, text))
             return None, None
         fname, dpath = text.split(":", 1)
+        slab = None
+        if "|" in dpath:  # Xdmf3 selection: path|start:stride:count:dims (one list per axis)
+            dpath, sel = dpath.split("|", 1)
+            try:
+                slab = [[int(v) for v in part.split()] for part in sel.split(":")]
+            except ValueError:
+                slab = []
         f = self.h5(fname)
         if f is None:
             return None, None
@@ -92,6 +99,18 @@ class Checker:
             return None, None
         declared = self.dims(item)
         shape = list(ds.shape)
+        if slab is not None:
+            ok = len(slab) == 4 and all(len(v) == len(shape) for v in slab) and slab[3] == shape
+            if ok:
+                start, stride, count = slab[:3]
+                ok = all(a >= 0 and b >= 1 and c >= 1 and a + (c - 1) * b < n
+                         for a, b, c, n in zip(start, stride, count, shape))
+            self.report(ok, "%s: %s:%s selection %s within dataset shape %s" % (where, fname, dpath, slab, shape))
+            if not ok:
+                return None, None
+            shape = [c for c in slab[2]]
+            while len(shape) > len(declared) and shape[0] == 1:
+                shape = shape[1:]  # a step's slab drops the leading axis of length 1
         self.report(declared == shape, "%s: %s:%s declared Dimensions %s, dataset shape %s"
                     % (where, fname, dpath, declared, shape))
         dtype = item.get("DataType", item.get("NumberType", "Float"))
@@ -107,8 +126,13 @@ class Checker:
                     % (where, fname, dpath, dtype, item.get("Precision", "-"), ds.dtype))
         if kind == "f":
             import numpy as np
-            finite = bool(np.all(np.isfinite(ds[()])))
-            self.report(finite, "%s: %s:%s values are finite" % (where, fname, dpath))
+            vals = ds[()]
+            if dpath.startswith("/vertex_fields/gap"):  # NaN where no gap exists (no contact point)
+                finite = not bool(np.any(np.isinf(vals))) and bool(np.any(np.isfinite(vals)))
+                self.report(finite, "%s: %s:%s values are finite or NaN, some finite" % (where, fname, dpath))
+            else:
+                finite = bool(np.all(np.isfinite(vals)))
+                self.report(finite, "%s: %s:%s values are finite" % (where, fname, dpath))
         return shape, ds
 
     def hyperslab(self, item, where):
@@ -209,6 +233,13 @@ class Checker:
     def slab_source(a):
         """(HDF5 path, start of the first axis) of a HyperSlab attribute, or (None, None)."""
         d = a.find("DataItem")
+        text = (d.text or "").strip() if d is not None else ""
+        if "|" in text and ":" in text:  # Xdmf3 selection path|start:...
+            path, sel = text.split(":", 1)[1].split("|", 1)
+            try:
+                return path, int(sel.split()[0])
+            except (ValueError, IndexError):
+                return path, None
         kids = d.findall("DataItem") if d is not None else []
         if len(kids) != 2:
             return None, None

@@ -3,7 +3,7 @@
 # Called by `make` before building; a machine that has everything returns in well under a second.
 set -euo pipefail
 PKGS=(make gcc pkg-config petsc-dev libmetis-dev libhdf5-openmpi-dev openmpi-bin gmsh
-      python3-h5py python3-numpy python3-matplotlib)
+      python3-h5py python3-numpy python3-matplotlib paraview python3-paraview xvfb xauth python3-meshio)
 missing=()
 for p in "${PKGS[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

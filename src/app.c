@@ -27,6 +27,7 @@ static PetscErrorCode LoadingSetFromOptions(SPApp a)
   PetscCall(PetscOptionsInt("-load_max_cutbacks", "Budget of the run: total times a failing load increment may be halved before the run stops", "SPAppSetUp", a->maxCutbacks, &a->maxCutbacks, NULL));
   PetscCall(PetscOptionsReal("-load_min_increment", "Floor of the cut-back: the run stops rather than halve the load-factor increment below this", "SPAppSetUp", a->minIncrement, &a->minIncrement, NULL));
   PetscCall(PetscOptionsReal("-max_wall_time", "Seconds: no new load step starts after this wall time; the run stops keeping its converged steps (0: no limit)", "SPAppSetUp", a->maxWallTime, &a->maxWallTime, NULL));
+  PetscCall(PetscOptionsBool("-quiet", "No progress line per load step on stdout (the summary is still printed)", "SPAppSetUp", a->quiet, &a->quiet, NULL));
   PetscOptionsEnd();
   PetscCheck(a->minIncrement > 0.0 && a->minIncrement <= 1.0, a->comm, PETSC_ERR_USER_INPUT, "-load_min_increment %g: must be in (0, 1] (a load-factor increment)", (double)a->minIncrement);
   PetscCheck(a->maxWallTime >= 0.0, a->comm, PETSC_ERR_USER_INPUT, "-max_wall_time %g: must be >= 0 seconds (0: no limit)", (double)a->maxWallTime);
@@ -37,6 +38,8 @@ static PetscErrorCode LoadingSetFromOptions(SPApp a)
 
 PetscErrorCode SPAppSetUp(SPApp a)
 {
+  PetscBool help;
+
   PetscFunctionBeginUser;
   PetscCall(LoadingSetFromOptions(a));
   PetscCall(PetscLogStagePush(a->log.mesh));
@@ -56,8 +59,9 @@ PetscErrorCode SPAppSetUp(SPApp a)
   PetscCall(DMCreateGlobalVector(a->dm, &a->u));
   PetscCall(PetscObjectSetName((PetscObject)a->u, "displacement"));
   PetscCall(VecSet(a->u, 0.0));
-  PetscCall(SPRestartLoad(a)); /* before the output files (re)open */
-  PetscCall(SPOutputOpen(a->output));
+  PetscCall(PetscOptionsHasHelp(NULL, &help));
+  if (!help) PetscCall(SPRestartLoad(a)); /* before the output files (re)open */
+  if (!help) PetscCall(SPOutputOpen(a->output)); /* -help lists the options and writes no file */
   PetscCall(PetscLogStagePop());
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -85,7 +89,7 @@ PetscErrorCode SPAppRun(SPApp a, PetscBool *converged, int *interrupted)
     PetscCall(SPOutputGetPointsFile(a->output, file, sizeof(file)));
     PetscCall(SPContactWritePoints(a->contact, a->u, file));
   }
-  PetscCall(SPOutputClose(a->output, RunStatus(a), a->stepsDone, a->loadReached));
+  PetscCall(SPOutputClose(a->output, a->contact, RunStatus(a), a->stepsDone, a->loadReached));
   PetscCall(PetscLogStagePop());
   PetscCall(SPSignalsRestore(&a->signals));
   *converged   = a->converged;

@@ -5,7 +5,8 @@
 
 const char *const SPBCTypes[] = {"dirichlet", "traction", "pressure", "force", "SPBCType", "SP_BC_", NULL};
 
-static PetscErrorCode BCSetFromOptions(MPI_Comm comm, PetscInt i, PetscInt dim, SPBC *bc)
+/* given = PETSC_FALSE: only list the options for -help (bc_0 when no condition is set), no checks */
+static PetscErrorCode BCSetFromOptions(MPI_Comm comm, PetscInt i, PetscInt dim, PetscBool given, SPBC *bc)
 {
   char      prefix[32];
   PetscInt  type = 0, nval = 3, nramp, ngrad;
@@ -33,6 +34,7 @@ static PetscErrorCode BCSetFromOptions(MPI_Comm comm, PetscInt i, PetscInt dim, 
   nramp = 2;
   PetscCall(PetscOptionsRealArray("-ramp", "Load curve a,b: the condition is off up to load factor a, full from b, linear between (0,1: proportional to the load factor; e.g. a normal phase, then a tangential one)", "SPBCSetFromOptions", bc->ramp, &nramp, &rampSet));
   PetscOptionsEnd();
+  if (!given) PetscFunctionReturn(PETSC_SUCCESS);
   bc->type = (SPBCType)type;
   {
     const PetscInt want = bc->type == SP_BC_DIRICHLET ? bc->ncomps : bc->type == SP_BC_PRESSURE ? 1 : dim;
@@ -56,8 +58,13 @@ PetscErrorCode SPBCSetFromOptions(MPI_Comm comm, PetscInt dim, PetscInt *nbc, SP
     PetscBool has;
     PetscCall(PetscSNPrintf(name, sizeof(name), "-bc_%" PetscInt_FMT "_type", i));
     PetscCall(PetscOptionsHasName(NULL, NULL, name, &has));
+    if (!has && i == 0) { /* -help lists the -bc_<i>_* family even when no condition is set */
+      PetscBool help;
+      PetscCall(PetscOptionsHasHelp(NULL, &help));
+      if (help) PetscCall(BCSetFromOptions(comm, 0, dim, PETSC_FALSE, &bc[0]));
+    }
     if (!has) break;
-    PetscCall(BCSetFromOptions(comm, i, dim, &bc[i]));
+    PetscCall(BCSetFromOptions(comm, i, dim, PETSC_TRUE, &bc[i]));
     (*nbc)++;
   }
   PetscFunctionReturn(PETSC_SUCCESS);

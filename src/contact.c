@@ -150,6 +150,13 @@ PetscErrorCode SPContactSetFromOptions(SPContact c)
     PetscBool has;
     PetscCall(PetscSNPrintf(name, sizeof(name), "-contact_obstacle_%" PetscInt_FMT "_type", c->nob));
     PetscCall(PetscOptionsHasName(NULL, NULL, name, &has));
+    if (!has && c->nob == 0) { /* -help lists the -contact_obstacle_<k>_* family even when unset */
+      PetscBool  help;
+      SPObstacle ob;
+      PetscReal  mu = c->mu;
+      PetscCall(PetscOptionsHasHelp(NULL, &help));
+      if (help) PetscCall(ObstacleSetFromOptions(comm, 0, c->dim, &ob, &mu)); /* defaults: valid */
+    }
     if (!has) break;
     c->obMu[c->nob] = c->mu;
     PetscCall(ObstacleSetFromOptions(comm, c->nob, c->dim, &c->ob[c->nob], &c->obMu[c->nob]));
@@ -200,7 +207,8 @@ PetscErrorCode SPContactSetUp(SPContact c)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Vertex fields for output: pressure, gap, shift, active on the vertex DM of `pressure` */
+/* Vertex fields for output: pressure, gap, shift, active on the vertex DM of `pressure`; gap is NaN
+   on vertices that are not contact points or have no projection (no gap exists there) */
 PetscErrorCode SPContactGetFields(SPContact c, Vec X, Vec pressure, Vec gap, Vec shift, Vec active)
 {
   DM           dmS;
@@ -215,7 +223,7 @@ PetscErrorCode SPContactGetFields(SPContact c, Vec X, Vec pressure, Vec gap, Vec
   PetscCall(DMGetGlobalSection(dmS, &gs));
   PetscCall(VecGetOwnershipRange(pressure, &rstart, NULL));
   PetscCall(VecZeroEntries(pressure));
-  PetscCall(VecZeroEntries(gap));
+  PetscCall(VecSet(gap, (PetscScalar)NAN)); /* no gap where there is no contact point or projection */
   PetscCall(VecZeroEntries(shift));
   PetscCall(VecZeroEntries(active));
   PetscCall(VecGetArray(pressure, &p));
@@ -228,7 +236,7 @@ PetscErrorCode SPContactGetFields(SPContact c, Vec X, Vec pressure, Vec gap, Vec
     PetscCall(PetscSectionGetOffset(gs, pt->vertex, &off));
     off -= rstart;
     p[off]  = pt->press;
-    g[off]  = pt->geo.gap;
+    g[off]  = pt->geo.elem != SP_ELEM_NONE ? pt->geo.gap : (PetscReal)NAN;
     sh[off] = pt->st.sN;
     a[off]  = pt->st.active ? 1.0 : 0.0;
   }

@@ -77,10 +77,12 @@ PetscErrorCode SPLoadingRun(SPApp app)
   PetscReal done = 0.0, inc = 1.0 / app->loadSteps;
   PetscInt  step = 0;
   PetscBool halt = PETSC_FALSE;
+  PetscInt  its0, lits0; /* solver counts before the step, for the progress line */
   Vec       ubackup;
 
   PetscFunctionBeginUser;
   PetscCall(VecDuplicate(app->u, &ubackup));
+  PetscCall(SPSolverGetCounts(app->solver, &its0, &lits0, NULL));
   app->converged = PETSC_TRUE;
   if (app->restartFile[0]) done = app->loadReached, inc = app->loadInc, step = app->stepsDone; /* SPRestartLoad */
   while (done < 1.0 - 1e-12) {
@@ -97,6 +99,8 @@ PetscErrorCode SPLoadingRun(SPApp app)
       PetscCall(SPOutputWriteStep(app->output, app->problem, app->u, app->contact));
       PetscCall(PetscLogStagePop());
       PetscCall(SPContactReportStep(app->contact, app->u, step, load));
+      PetscCall(SPLogProgress(app, step, load, its0, lits0));
+      PetscCall(SPSolverGetCounts(app->solver, &its0, &lits0, NULL));
       app->stepsDone = step, app->loadReached = done;
       PetscCall(SPRestartWriteStep(app, inc));
       PetscCall(Interrupted(app, &halt));

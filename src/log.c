@@ -1,4 +1,5 @@
-/* Named log stages and events, so -log_view shows where the time goes. */
+/* Named log stages and events, so -log_view shows where the time goes; the progress line per load
+   step. */
 #include <spcontact-impl.h>
 
 PetscErrorCode SPLogRegister(SPLog *log)
@@ -19,5 +20,26 @@ PetscErrorCode SPLogRegister(SPLog *log)
   PetscCall(PetscLogEventRegister("SPMatCreate", id, &log->matCreate));
   PetscCall(PetscLogEventRegister("SPNearNullSpace", id, &log->nearNullSpace));
   PetscCall(PetscLogEventRegister("SPFastSetUp", id, &log->fastSetUp));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* One line on stdout per converged load step (silenced by -quiet): step k/N (N the requested
+   number of steps; cut-backs add steps), load factor, Newton and linear iterations of the step
+   (its0/lits0: the solver's totals before it), active points and max penetration of the last
+   Newton iterate, wall time since start. */
+PetscErrorCode SPLogProgress(SPApp app, PetscInt step, PetscReal load, PetscInt its0, PetscInt lits0)
+{
+  SPContactStats st = {0};
+  PetscInt       its, lits;
+  PetscBool      on;
+  PetscLogDouble t;
+
+  PetscFunctionBeginUser;
+  if (app->quiet) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(SPSolverGetCounts(app->solver, &its, &lits, NULL));
+  PetscCall(SPContactIsActive(app->contact, &on));
+  if (on) PetscCall(SPContactGetIterationStats(app->contact, &st));
+  PetscCall(PetscTime(&t));
+  PetscCall(PetscPrintf(app->comm, "step %" PetscInt_FMT "/%" PetscInt_FMT " load %.6f newton %" PetscInt_FMT " linear %" PetscInt_FMT " active %" PetscInt_FMT " max_penetration %.3e wall %.2fs\n", step, app->loadSteps, (double)load, its - its0, lits - lits0, st.activePoints, (double)st.maxPenetration, (double)(t - app->t0)));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

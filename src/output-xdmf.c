@@ -1,6 +1,7 @@
 /* XDMF index of the HDF5 file, written by rank 0 after the HDF5 file is complete: a temporal
    collection of grids sharing /geometry/vertices and /viz/topology/cells, with the vertex fields
-   of each step read as hyperslabs of /vertex_fields/<name>_Field_0 (PETSc's layout). */
+   of each step read as slabs of /vertex_fields/<name>_Field_0 (PETSc's layout); one file for
+   ParaView's default Xdmf3 reader, one for its legacy XDMF reader. */
 #include <spcontact-impl.h>
 
 static const char *TopologyType(PetscInt dim, PetscInt corners)
@@ -45,41 +46,35 @@ static PetscErrorCode MeshCounts(DM dm, PetscInt *nv, PetscInt *nc, PetscInt *co
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static void Attribute(FILE *fp, const char h5[], const char name[], PetscInt nc, PetscInt step, PetscInt nsteps, PetscInt nv)
+/* One vertex field of one step: the step's slab of the (nsteps, nv[, nc]) dataset. Xdmf3 (ParaView's
+   default reader) selects it with the "path|start:stride:count:dims" syntax of its HDF5 controller
+   and rejects HyperSlab items ("unrecognized array type"); the legacy reader needs a HyperSlab. */
+static void Attribute(FILE *fp, const char h5[], const char name[], PetscInt nc, PetscInt step, PetscInt nsteps, PetscInt nv, PetscBool legacy)
 {
-  const char *type = nc == 1 ? "Scalar" : "Vector";
-  if (nc == 1) {
-    fprintf(fp, "        <Attribute Name=\"%s\" AttributeType=\"%s\" Center=\"Node\">\n", name, type);
-    fprintf(fp, "          <DataItem ItemType=\"HyperSlab\" Dimensions=\"1 %d\" Type=\"HyperSlab\">\n", (int)nv);
-    fprintf(fp, "            <DataItem Dimensions=\"3 2\" Format=\"XML\">%d 0 1 1 1 %d</DataItem>\n", (int)step, (int)nv);
-    fprintf(fp, "            <DataItem DataType=\"Float\" Precision=\"8\" Dimensions=\"%d %d\" Format=\"HDF\">%s:/vertex_fields/%s_Field_0</DataItem>\n", (int)nsteps, (int)nv, h5, name);
+  char one[64], zero[16], dims[96];
+
+  snprintf(one, sizeof(one), nc == 1 ? "%d" : "%d %d", (int)nv, (int)nc); /* one step's shape */
+  snprintf(zero, sizeof(zero), nc == 1 ? "0" : "0 0");
+  snprintf(dims, sizeof(dims), "%d %s", (int)nsteps, one);
+  fprintf(fp, "        <Attribute Name=\"%s\" AttributeType=\"%s\" Center=\"Node\">\n", name, nc == 1 ? "Scalar" : "Vector");
+  if (legacy) {
+    fprintf(fp, "          <DataItem ItemType=\"HyperSlab\" Dimensions=\"1 %s\" Type=\"HyperSlab\">\n", one);
+    fprintf(fp, "            <DataItem Dimensions=\"3 %d\" Format=\"XML\">%d %s %s 1 1 %s</DataItem>\n", nc == 1 ? 2 : 3, (int)step, zero, nc == 1 ? "1" : "1 1", one);
+    fprintf(fp, "            <DataItem DataType=\"Float\" Precision=\"8\" Dimensions=\"%s\" Format=\"HDF\">%s:/vertex_fields/%s_Field_0</DataItem>\n", dims, h5, name);
+    fprintf(fp, "          </DataItem>\n");
   } else {
-    fprintf(fp, "        <Attribute Name=\"%s\" AttributeType=\"%s\" Center=\"Node\">\n", name, type);
-    fprintf(fp, "          <DataItem ItemType=\"HyperSlab\" Dimensions=\"1 %d %d\" Type=\"HyperSlab\">\n", (int)nv, (int)nc);
-    fprintf(fp, "            <DataItem Dimensions=\"3 3\" Format=\"XML\">%d 0 0 1 1 1 1 %d %d</DataItem>\n", (int)step, (int)nv, (int)nc);
-    fprintf(fp, "            <DataItem DataType=\"Float\" Precision=\"8\" Dimensions=\"%d %d %d\" Format=\"HDF\">%s:/vertex_fields/%s_Field_0</DataItem>\n", (int)nsteps, (int)nv, (int)nc, h5, name);
+    fprintf(fp, "          <DataItem DataType=\"Float\" Precision=\"8\" Dimensions=\"%s\" Format=\"HDF\">%s:/vertex_fields/%s_Field_0|%d %s:1 %s:1 %s:%s</DataItem>\n", one, h5, name, (int)step, zero, nc == 1 ? "1" : "1 1", one, dims);
   }
-  fprintf(fp, "          </DataItem>\n        </Attribute>\n");
+  fprintf(fp, "        </Attribute>\n");
 }
 
-PetscErrorCode SPOutputWriteXdmf(SPOutput o, PetscBool complete)
+static PetscErrorCode WriteFile(SPOutput o, const char xmf[], const char h5[], PetscInt dim, PetscInt nv, PetscInt nc, PetscInt corners, PetscBool legacy)
 {
   static const char *const cfields[] = {"contact_pressure", "gap", "shift", "active"};
   static const char *const ffields[] = {"tangential_traction", "slip", "status"}; /* with friction */
-  MPI_Comm    comm = PetscObjectComm((PetscObject)o->dm);
-  PetscMPIInt rank;
-  PetscInt    nv = 0, nc = 0, corners = 0, dim;
-  char        h5[PETSC_MAX_PATH_LEN + 8], xmf[PETSC_MAX_PATH_LEN + 8];
-  FILE       *fp;
+  FILE *fp;
 
   PetscFunctionBeginUser;
-  PetscCall(MeshCounts(o->dm, &nv, &nc, &corners));
-  PetscCall(DMGetDimension(o->dm, &dim));
-  PetscCallMPI(MPI_Comm_rank(comm, &rank));
-  if (rank) PetscFunctionReturn(PETSC_SUCCESS);
-  /* relative: the .xmf sits beside it; written as .xmf.part, renamed with the .h5 when complete */
-  PetscCall(PetscSNPrintf(h5, sizeof(h5), "%s.h5%s", o->name, complete ? "" : ".part"));
-  PetscCall(PetscSNPrintf(xmf, sizeof(xmf), "%s.xmf.part", o->prefix));
   fp = fopen(xmf, "w");
   PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write %s", xmf);
   fprintf(fp, "<?xml version=\"1.0\" ?>\n<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n<Xdmf Version=\"2.0\">\n  <Domain>\n");
@@ -90,14 +85,39 @@ PetscErrorCode SPOutputWriteXdmf(SPOutput o, PetscBool complete)
     fprintf(fp, "          <DataItem Format=\"HDF\" DataType=\"Int\" Dimensions=\"%d %d\">%s:/viz/topology/cells</DataItem>\n        </Topology>\n", (int)nc, (int)corners, h5);
     fprintf(fp, "        <Geometry GeometryType=\"%s\">\n", dim == 2 ? "XY" : "XYZ");
     fprintf(fp, "          <DataItem Format=\"HDF\" DataType=\"Float\" Precision=\"8\" Dimensions=\"%d %d\">%s:/geometry/vertices</DataItem>\n        </Geometry>\n", (int)nv, (int)dim, h5);
-    Attribute(fp, h5, "displacement", dim, k, o->nsteps, nv);
+    Attribute(fp, h5, "displacement", dim, k, o->nsteps, nv, legacy);
     if (o->contactFields)
-      for (PetscInt f = 0; f < 4; ++f) Attribute(fp, h5, cfields[f], 1, k, o->nsteps, nv);
+      for (PetscInt f = 0; f < 4; ++f) Attribute(fp, h5, cfields[f], 1, k, o->nsteps, nv, legacy);
     if (o->frictionFields)
-      for (PetscInt f = 0; f < 3; ++f) Attribute(fp, h5, ffields[f], f < 2 ? dim : 1, k, o->nsteps, nv);
+      for (PetscInt f = 0; f < 3; ++f) Attribute(fp, h5, ffields[f], f < 2 ? dim : 1, k, o->nsteps, nv, legacy);
     fprintf(fp, "      </Grid>\n");
   }
   fprintf(fp, "    </Grid>\n  </Domain>\n</Xdmf>\n");
   fclose(fp);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* <prefix>.xmf for ParaView's default (Xdmf3) reader and <prefix>-xdmf2.xmf for the legacy "XDMF
+   Reader", written as .part files that point at the .h5 (complete run: renamed with it) or the
+   .h5.part (failed or interrupted run: they stay .part); no file at all when no step converged (an
+   XDMF without grids crashes ParaView). */
+PetscErrorCode SPOutputWriteXdmf(SPOutput o, PetscBool complete)
+{
+  MPI_Comm    comm = PetscObjectComm((PetscObject)o->dm);
+  PetscMPIInt rank;
+  PetscInt    nv = 0, nc = 0, corners = 0, dim;
+  char        h5[PETSC_MAX_PATH_LEN + 8], xmf[PETSC_MAX_PATH_LEN + 16];
+
+  PetscFunctionBeginUser;
+  PetscCall(MeshCounts(o->dm, &nv, &nc, &corners));
+  PetscCall(DMGetDimension(o->dm, &dim));
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  if (rank) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(PetscSNPrintf(h5, sizeof(h5), "%s.h5%s", o->name, complete ? "" : ".part")); /* relative: the .xmf sits beside it */
+  for (PetscInt legacy = 0; legacy < 2; ++legacy) {
+    PetscCall(PetscSNPrintf(xmf, sizeof(xmf), legacy ? "%s-xdmf2.xmf.part" : "%s.xmf.part", o->prefix));
+    if (o->nsteps) PetscCall(WriteFile(o, xmf, h5, dim, nv, nc, corners, legacy ? PETSC_TRUE : PETSC_FALSE));
+    else (void)remove(xmf); /* a stale file of an earlier run must not pose as this run's */
+  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -253,15 +253,16 @@ static PetscErrorCode WriteStatus(SPOutput o, const char status[], PetscInt step
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Finish the files: the status attribute, the XDMF; only a complete run renames its *.part files
-   (h5, xmf, csv history, contact-points csv) to their final names, all or none. A failed or
+/* Finish the files: the status attribute, the XDMF (volume for both readers, contact surface);
+   only a complete run renames its *.part files (h5, xmf, csv history, contact-points csv) to their
+   final names, all or none. A failed or
    interrupted run keeps the .part names; its h5 holds every converged step (readable). */
-PetscErrorCode SPOutputClose(SPOutput o, const char status[], PetscInt step, PetscReal load)
+PetscErrorCode SPOutputClose(SPOutput o, SPContact contact, const char status[], PetscInt step, PetscReal load)
 {
   MPI_Comm    comm = PetscObjectComm((PetscObject)o->dm);
   PetscMPIInt rank;
-  PetscBool   complete;
-  const char *files[4];
+  PetscBool   complete, surface = PETSC_FALSE;
+  const char *files[6];
   PetscInt    n = 0, failed = 0;
   int         err = 0;
 
@@ -277,10 +278,13 @@ PetscErrorCode SPOutputClose(SPOutput o, const char status[], PetscInt step, Pet
     PetscCall(PetscViewerDestroy(&o->h5));
   }
   if (o->enabled) PetscCall(SPOutputWriteXdmf(o, complete));
+  if (o->enabled) PetscCall(SPOutputWriteSurfaceXdmf(o, contact, complete, &surface));
   if (!complete) PetscFunctionReturn(PETSC_SUCCESS);
   files[n++] = ".csv";
   if (o->pointsFile) files[n++] = "_contact.csv";
-  if (o->enabled) files[n++] = ".xmf", files[n++] = ".h5";
+  if (o->enabled) files[n++] = ".xmf", files[n++] = "-xdmf2.xmf";
+  if (surface) files[n++] = "-surface.xmf";
+  if (o->enabled) files[n++] = ".h5";
   if (rank == 0) PetscCall(RenameAll(o, files, n, &failed, &err));
   PetscCallMPI(MPI_Bcast(&failed, 1, MPIU_INT, 0, comm));
   PetscCallMPI(MPI_Bcast(&err, 1, MPI_INT, 0, comm));

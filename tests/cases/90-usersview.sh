@@ -1,0 +1,96 @@
+# Users' view: the progress line per load step (-quiet silences it), gap NaN off the contact
+# points, -help completeness (every option read in src/ is listed; -help writes no file).
+
+# One line "step k/N load f newton n linear n active n max_penetration x wall t" per converged
+# load step, k = 1..N and f = k/N; none with -quiet (the summary stays).
+test_progress_line() {
+  local rc=0 n=3 o="-options_file input/hertz2d.opts -load_steps 3 -output_dir $CASE_DIR"
+  spc "$CASE_DIR/run.txt" 1 $o || return 1
+  spc "$CASE_DIR/quiet.txt" 1 $o -quiet || return 1
+  assert_eq progress_lines "$(grep -c '^step ' "$CASE_DIR/run.txt")" $n || rc=1
+  for k in 1 2 3; do
+    local line; line=$(grep "^step $k/$n " "$CASE_DIR/run.txt")
+    echo "$line"
+    awk -v k=$k -v n=$n '{ ok = NF == 14 && $3 == "load" && ($4 - k / n) ^ 2 < 1e-12 && $5 == "newton" && $6 > 0 &&
+        $7 == "linear" && $8 >= $6 && $9 == "active" && $10 > 0 && $11 == "max_penetration" && $13 == "wall" && $14 ~ /s$/;
+        exit !ok }' <<<"$line" && echo "step $k fields ok" || { echo "step $k fields FAILED"; rc=1; }
+  done
+  local sum; sum=$(grep '^step ' "$CASE_DIR/run.txt" | awk '{s += $6} END {print s}')
+  assert_eq newton_sum_is_summary "$sum" "$(sval "$CASE_DIR/run.txt" newton_iterations)" || rc=1
+  assert_eq quiet_lines "$(grep -c '^step ' "$CASE_DIR/quiet.txt")" 0 || rc=1
+  assert_eq quiet_summary "$(sval "$CASE_DIR/quiet.txt" converged)" yes || rc=1
+  return $rc
+}
+
+# Every option name the code reads (a "-name" literal in a PetscOptions* call in src/) is listed
+# by a bare `spcontact -help` (no options file: the indexed families appear with index 0), and is
+# in the README's option reference; -help exits 0 and writes no file.
+test_help_complete() {
+  local rc=0 names missing=0 o
+  names=$(grep -rhoE 'PetscOptions[A-Za-z]+\((NULL, *[A-Za-z"_]*, *|PetscOptionsObject, *)?"-[A-Za-z0-9_]+"' src/ |
+          grep -oE '"-[A-Za-z0-9_]+"' | tr -d '"' | sort -u)
+  echo "option names read in src/: $(echo $names | wc -w)"
+  mkdir -p "$CASE_DIR/run"
+  ( cd "$CASE_DIR/run" && timeout 120 "$OLDPWD/$SPC" -help >../help.txt 2>&1 ); local code=$?
+  RERUN="(cd $CASE_DIR/run && bin/spcontact -help)"
+  assert_eq help_exit_code "$code" 0 || rc=1
+  assert_eq help_files_written "$(find "$CASE_DIR/run" -mindepth 1 | wc -l)" 0 || rc=1
+  spc "$CASE_DIR/help_opts.txt" 1 -options_file input/hertz2d.opts -output_dir "$CASE_DIR/out" -help || rc=1
+  [ ! -e "$CASE_DIR/out" ] && echo "-help with an options file: no output directory ok" || { echo "-help wrote $CASE_DIR/out FAILED"; rc=1; }
+  for o in $names; do
+    grep -qE "^ *(${o}|-[a-z_]+_0_${o#-})[ :]" "$CASE_DIR/help.txt" || { echo "not in -help: $o FAILED"; missing=1; }
+    grep -qE -- "(${o}|_${o#-})\b" README.md || { echo "not in README: $o FAILED"; missing=1; }
+  done
+  for fam in -bc_0_type -contact_obstacle_0_type -contact_pair_0_slave_values -material_0_E; do
+    grep -qE "^ *${fam}[ :]" "$CASE_DIR/help.txt" && echo "family $fam listed ok" || { echo "family $fam FAILED"; missing=1; }
+  done
+  [ $missing -eq 0 ] && echo "every option in -help and README ok" || rc=1
+  return $rc
+}
+
+# scripts/sweep, local mode: a 2 x 2 product on B1 (block2d) gives 4 CSV rows in product order,
+# each with exit code 0 and the summary of a direct run with the same options (displacement_max,
+# newton_iterations); the SLURM scripts pass `bash -n`.
+test_sweep_local() {
+  local rc=0 csv=$CASE_DIR/sw/sweep.csv
+  RERUN="scripts/sweep --out $CASE_DIR/sw input/block2d.opts -contact_method penalty,shifted -contact_alpha 10,100"
+  timeout 600 scripts/sweep --out "$CASE_DIR/sw" input/block2d.opts -contact_method penalty,shifted -contact_alpha 10,100 >"$CASE_DIR/sweep.txt" 2>&1 || { echo "sweep failed"; cat "$CASE_DIR/sweep.txt"; return 1; }
+  cat "$csv" | cut -c1-120
+  assert_eq csv_rows "$(wc -l <"$csv")" 5 || rc=1
+  assert_eq csv_axes "$(head -1 "$csv" | cut -d, -f1-4)" "case,contact_method,contact_alpha,exit_code" || rc=1
+  assert_eq case4_values "$(sed -n 5p "$csv" | cut -d, -f1-4)" '4,"shifted","100",0' || rc=1
+  spc "$CASE_DIR/direct.txt" 1 -options_file input/block2d.opts -contact_method shifted -contact_alpha 100 -output_dir "$CASE_DIR/direct" || rc=1
+  local col
+  for key in displacement_max newton_iterations; do
+    col=$(head -1 "$csv" | tr ',' '\n' | grep -nx "$key" | cut -d: -f1)
+    assert_eq "case4_$key" "$(sed -n 5p "$csv" | cut -d, -f"$col")" "$(sval "$CASE_DIR/direct.txt" "$key")" || rc=1
+  done
+  bash -n scripts/sweep-array.sbatch && bash -n scripts/job.sbatch && echo "sbatch scripts: bash -n ok" || { echo "sbatch syntax FAILED"; rc=1; }
+  return $rc
+}
+
+# scripts/convert-mesh: the B2 gmsh mesh written as Abaqus .inp by meshio (its physical groups as
+# *ELSETs "1", "2", "3", "10"), converted back, runs B2 with the figures of the gmsh original.
+test_convert_mesh_inp() {
+  local rc=0 d=$CASE_DIR
+  "$PYTHON" - "$d/hertz2d.inp" <<'PY' || return 1
+import sys
+import meshio
+import numpy as np
+m = meshio.read("build/mesh/hertz2d.msh")
+phys = m.cell_data["gmsh:physical"]
+sets = {}
+for i in range(len(m.cells)):
+    for t in np.unique(phys[i]):
+        sets.setdefault(str(t), [np.zeros(0, dtype=int) for _ in m.cells])[i] = np.where(phys[i] == t)[0]
+meshio.write(sys.argv[1], meshio.Mesh(m.points[:, :2], [(b.type, b.data) for b in m.cells], cell_sets=sets))
+print("wrote %s with sets %s" % (sys.argv[1], sorted(sets)))
+PY
+  RERUN="scripts/convert-mesh $d/hertz2d.inp $d/hertz2d_conv.msh"
+  scripts/convert-mesh "$d/hertz2d.inp" "$d/hertz2d_conv.msh" || { echo "convert-mesh failed"; return 1; }
+  spc "$d/orig.txt" 1 -options_file input/hertz2d.opts -quiet -output_dir "$d/o" || rc=1
+  spc "$d/conv.txt" 1 -options_file input/hertz2d.opts -mesh_file "$d/hertz2d_conv.msh" -quiet -output_dir "$d/c" || rc=1
+  same_summary "$d/orig.txt" "$d/conv.txt" 1e-10 vertices cells contact_points newton_iterations displacement_max \
+    contact_force_y contact_peak_pressure contact_radius contact_max_penetration || rc=1
+  return $rc
+}
