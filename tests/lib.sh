@@ -52,19 +52,25 @@ same_summary() {
 }
 
 # bad_input_cases: reads "why|options file|extra options" lines on stdin; every run must exit
-# nonzero (not by a signal) with exactly one stderr line "spcontact: error: ...". Returns 0 if all do.
+# nonzero (not by a signal) with exactly one stderr line "spcontact: error: ...", no PETSc or
+# HDF5 error line on stdout or stderr, and no final-named output file (.h5, .xmf, .csv) written.
+# Returns 0 if all do.
 bad_input_cases() {
   local rc=0 i=0 why base args code lines
   while IFS='|' read -r why base args; do
     [ -z "$why" ] && continue
     i=$((i + 1))
     # shellcheck disable=SC2086
+    touch "$CASE_DIR/.mark$i"; sleep 0.01
     timeout 60 $SPC -options_file "$base" -output_dir "$CASE_DIR" $args >"$CASE_DIR/o$i.txt" 2>"$CASE_DIR/e$i.txt"; code=$?
     lines=$(wc -l < "$CASE_DIR/e$i.txt")
-    if [ $code -ne 0 ] && [ $code -lt 128 ] && [ "$lines" -eq 1 ] && grep -q '^spcontact: error:' "$CASE_DIR/e$i.txt"; then
+    # no PETSc/HDF5 error wall anywhere, no final-named output written by this case
+    walls=$(cat "$CASE_DIR/o$i.txt" "$CASE_DIR/e$i.txt" | grep -c 'PETSC ERROR\|HDF5-DIAG')
+    finals=$(find "$CASE_DIR" -newer "$CASE_DIR/.mark$i" \( -name '*.h5' -o -name '*.xmf' -o -name '*.csv' \) | wc -l)
+    if [ $code -ne 0 ] && [ $code -lt 128 ] && [ "$lines" -eq 1 ] && [ "$walls" -eq 0 ] && [ "$finals" -eq 0 ] && grep -q '^spcontact: error:' "$CASE_DIR/e$i.txt"; then
       echo "ok   $why: $(cat "$CASE_DIR/e$i.txt")"
     else
-      echo "FAIL $why (exit $code, $lines stderr lines): $(head -3 "$CASE_DIR/e$i.txt")"; rc=1
+      echo "FAIL $why (exit $code, $lines stderr lines, $walls PETSc/HDF5 error lines, $finals final-named files): $(head -3 "$CASE_DIR/e$i.txt")"; rc=1
     fi
   done
   return $rc
