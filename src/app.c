@@ -36,6 +36,17 @@ static PetscErrorCode LoadingSetFromOptions(SPApp a)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Options that each make sense but not together */
+static PetscErrorCode CheckCombination(SPApp a)
+{
+  PetscBool contact;
+
+  PetscFunctionBeginUser;
+  PetscCall(SPContactIsActive(a->contact, &contact));
+  PetscCheck(!(contact && a->problem->mmsAmp != 0.0), a->comm, PETSC_ERR_USER_INPUT, "-material_mms: the manufactured solution is a contact-free verification (its exact solution ignores contact); drop -material_mms or the contact options");
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode SPAppSetUp(SPApp a)
 {
   PetscBool help;
@@ -54,6 +65,7 @@ PetscErrorCode SPAppSetUp(SPApp a)
   PetscCall(SPOutputSetFromOptions(a->output));
   PetscCall(SPProblemSetUp(a->problem));
   PetscCall(SPContactSetUp(a->contact));
+  PetscCall(CheckCombination(a));
   PetscCall(SPSolverCreate(a->dm, a->problem, a->contact, &a->log, &a->solver));
   PetscCall(SPSolverSetFromOptions(a->solver));
   PetscCall(DMCreateGlobalVector(a->dm, &a->u));

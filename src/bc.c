@@ -40,6 +40,7 @@ static PetscErrorCode BCSetFromOptions(MPI_Comm comm, PetscInt i, PetscInt dim, 
     const PetscInt want = bc->type == SP_BC_DIRICHLET ? bc->ncomps : bc->type == SP_BC_PRESSURE ? 1 : dim;
     PetscCheck(!valueSet || nval == want, comm, PETSC_ERR_USER_INPUT, "-%svalue: %s needs %" PetscInt_FMT " value(s), got %" PetscInt_FMT, prefix, SPBCTypes[type], want, nval);
   }
+  for (PetscInt k = 0; k < 3; ++k) PetscCheck(!PetscIsInfOrNanReal(bc->value[k]) && !PetscIsInfOrNanReal(bc->gradient[k]), comm, PETSC_ERR_USER_INPUT, "-%svalue/-%sgradient: every value must be a finite number", prefix, prefix);
   PetscCheck(!gradSet || bc->type == SP_BC_PRESSURE, comm, PETSC_ERR_USER_INPUT, "-%sgradient: only a pressure condition takes a gradient (this one is %s)", prefix, SPBCTypes[type]);
   PetscCheck(!gradSet || ngrad == dim, comm, PETSC_ERR_USER_INPUT, "-%sgradient: give %" PetscInt_FMT " components (one per coordinate), got %" PetscInt_FMT, prefix, dim, ngrad);
   PetscCheck(!rampSet || (nramp == 2 && bc->ramp[0] >= 0.0 && bc->ramp[1] > bc->ramp[0] && bc->ramp[1] <= 1.0), comm, PETSC_ERR_USER_INPUT, "-%sramp: give two load factors 0 <= a < b <= 1", prefix);

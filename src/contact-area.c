@@ -149,7 +149,7 @@ PetscErrorCode SPContactComputeAreas(SPContact c)
 {
   Vec                area, meas, count;
   const PetscScalar *pa, *pm, *pc;
-  PetscReal          E;
+  PetscReal          E, range[2] = {PETSC_MIN_REAL, 0.0};
 
   PetscFunctionBeginUser;
   PetscCall(DMCreateGlobalVector(c->dmC, &area));
@@ -169,7 +169,11 @@ PetscErrorCode SPContactComputeAreas(SPContact c)
        penalty penetration), and no larger than with the stiffer material alone (conditioning). */
     PetscCall(SPProblemGetVertexYoung(c->problem, c->pt[i].vertex, &E));
     c->pt[i].eps = c->penalty > 0.0 ? c->penalty : c->alpha * E / h;
+    range[0]     = PetscMax(range[0], -c->pt[i].eps * h / E); /* -min and max of eps h / E */
+    range[1]     = PetscMax(range[1], c->pt[i].eps * h / E);
   }
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, range, 2, MPIU_REAL, MPIU_MAX, PetscObjectComm((PetscObject)c->dm)));
+  PetscCheck(c->penalty <= 0.0 || range[1] == 0.0 || (-range[0] >= 1e-3 && range[1] <= 1e8), PetscObjectComm((PetscObject)c->dm), PETSC_ERR_USER_INPUT, "-contact_penalty %g: eps h / E is %g..%g at the contact points, outside 1e-3..1e8 (below, the penetration is of the order of the load over E; above, the Jacobian loses all digits); give -contact_alpha (eps = alpha E / h) instead", (double)c->penalty, (double)-range[0], (double)range[1]);
   PetscCall(VecRestoreArrayRead(area, &pa));
   PetscCall(VecRestoreArrayRead(meas, &pm));
   PetscCall(VecRestoreArrayRead(count, &pc));

@@ -31,6 +31,17 @@ PetscErrorCode SPContactCreate(DM dm, SPProblem problem, PetscLogEvent search, S
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* An obstacle option vector, if given: one finite value per mesh dimension (a 2D point on a 3D mesh
+   would silently take z = 0) */
+static PetscErrorCode CheckVector(MPI_Comm comm, const char prefix[], const char name[], PetscInt dim, PetscBool set, PetscInt n, const PetscReal v[])
+{
+  PetscFunctionBeginUser;
+  if (!set) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCheck(n == dim, comm, PETSC_ERR_USER_INPUT, "-%s%s: give %" PetscInt_FMT " components on this %" PetscInt_FMT "D mesh, got %" PetscInt_FMT, prefix, name, dim, dim, n);
+  for (PetscInt d = 0; d < n; ++d) PetscCheck(!PetscIsInfOrNanReal(v[d]), comm, PETSC_ERR_USER_INPUT, "-%s%s: component %" PetscInt_FMT " is not a finite number", prefix, name, d);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscErrorCode ObstacleSetFromOptions(MPI_Comm comm, PetscInt i, PetscInt dim, SPObstacle *ob, PetscReal *mu)
 {
   char      prefix[48];
@@ -46,12 +57,15 @@ static PetscErrorCode ObstacleSetFromOptions(MPI_Comm comm, PetscInt i, PetscInt
   PetscOptionsBegin(comm, prefix, "Rigid obstacle", "spcontact");
   PetscCall(PetscOptionsEList("-type", "Obstacle: plane (point, normal), sphere (centre=point, radius; a circle in 2D), cylinder (point on axis, axis=normal, radius)", "SPContactSetFromOptions", ObstacleTypes, 3, ObstacleTypes[0], &type, NULL));
   n = 3;
-  PetscCall(PetscOptionsRealArray("-point", "Plane point, or sphere/cylinder centre", "SPContactSetFromOptions", ob->point, &n, NULL));
+  PetscCall(PetscOptionsRealArray("-point", "Plane point, or sphere/cylinder centre", "SPContactSetFromOptions", ob->point, &n, &set));
+  PetscCall(CheckVector(comm, prefix, "point", dim, set, n, ob->point));
   n = 3;
   PetscCall(PetscOptionsRealArray("-normal", "Plane normal (towards the body) or cylinder axis", "SPContactSetFromOptions", ob->normal, &n, &set));
+  PetscCall(CheckVector(comm, prefix, "normal", dim, set, n, ob->normal));
   PetscCall(PetscOptionsReal("-radius", "Sphere/cylinder radius > 0", "SPContactSetFromOptions", ob->radius, &ob->radius, NULL));
   n = 3;
-  PetscCall(PetscOptionsRealArray("-motion", "Rigid displacement of the obstacle at load factor 1", "SPContactSetFromOptions", ob->motion, &n, NULL));
+  PetscCall(PetscOptionsRealArray("-motion", "Rigid displacement of the obstacle at load factor 1", "SPContactSetFromOptions", ob->motion, &n, &set));
+  PetscCall(CheckVector(comm, prefix, "motion", dim, set, n, ob->motion));
   PetscCall(PetscOptionsReal("-mu", "Coulomb friction coefficient against this obstacle (default -contact_friction_mu)", "SPContactSetFromOptions", *mu, mu, NULL));
   PetscOptionsEnd();
   PetscCheck(*mu >= 0.0 && !PetscIsInfOrNanReal(*mu), comm, PETSC_ERR_USER_INPUT, "-%smu %g: the friction coefficient must be a number >= 0", prefix, (double)*mu);
@@ -138,10 +152,12 @@ PetscErrorCode SPContactSetFromOptions(SPContact c)
   c->tangent = (SPTangent)tangent;
   if (c->alphaT < 0.0) c->alphaT = c->alpha;
   PetscCheck(c->mu >= 0.0 && !PetscIsInfOrNanReal(c->mu), comm, PETSC_ERR_USER_INPUT, "-contact_friction_mu %g: the friction coefficient must be a number >= 0", (double)c->mu);
-  PetscCheck(c->alphaT > 0.0, comm, PETSC_ERR_USER_INPUT, "-contact_friction_alpha %g: the tangential penalty factor must be positive", (double)c->alphaT);
-  PetscCheck(c->creepRtol > 0.0 && c->slipRtol > 0.0, comm, PETSC_ERR_USER_INPUT, "-contact_friction_creep_rtol %g, -contact_friction_slip_rtol %g: must be positive", (double)c->creepRtol, (double)c->slipRtol);
-  PetscCheck(!setPenalty || c->penalty > 0.0, comm, PETSC_ERR_USER_INPUT, "-contact_penalty %g: the penalty must be positive", (double)c->penalty);
   PetscCheck(c->alpha > 0.0, comm, PETSC_ERR_USER_INPUT, "-contact_alpha %g: the penalty factor must be positive", (double)c->alpha);
+  PetscCheck(c->alpha >= 1e-3 && c->alpha <= 1e8, comm, PETSC_ERR_USER_INPUT, "-contact_alpha %g: outside 1e-3..1e8 (eps h / E); below, the penetration is of the order of the load over E; above, the Jacobian loses all digits. 10 to 1000 are usual", (double)c->alpha);
+  PetscCheck(c->alphaT > 0.0, comm, PETSC_ERR_USER_INPUT, "-contact_friction_alpha %g: the tangential penalty factor must be positive", (double)c->alphaT);
+  PetscCheck(c->alphaT >= 1e-3 && c->alphaT <= 1e8, comm, PETSC_ERR_USER_INPUT, "-contact_friction_alpha %g: outside 1e-3..1e8 (eps_T h / E)", (double)c->alphaT);
+  PetscCheck(c->creepRtol > 0.0 && c->slipRtol > 0.0, comm, PETSC_ERR_USER_INPUT, "-contact_friction_creep_rtol %g, -contact_friction_slip_rtol %g: must be positive", (double)c->creepRtol, (double)c->slipRtol);
+  PetscCheck(!setPenalty || (c->penalty > 0.0 && !PetscIsInfOrNanReal(c->penalty)), comm, PETSC_ERR_USER_INPUT, "-contact_penalty %g: the penalty must be a positive number", (double)c->penalty);
   PetscCheck(!c->gapTolSet || c->gapTol > 0.0, comm, PETSC_ERR_USER_INPUT, "-contact_gap_tol %g: must be positive", (double)c->gapTol);
   PetscCheck(c->gapRtol > 0.0 && c->gapRtol < 1.0, comm, PETSC_ERR_USER_INPUT, "-contact_gap_rtol %g: must be in (0, 1) (a fraction of the contact facet size)", (double)c->gapRtol);
   PetscCheck(c->stepCap >= 0.0, comm, PETSC_ERR_USER_INPUT, "-contact_step_cap %g: must be >= 0 (0 disables the step control)", (double)c->stepCap);

@@ -1,6 +1,8 @@
 static const char help[] = "spcontact: parallel FEM contact mechanics with the shifted penalty method.\n"
                            "Run `spcontact -help` for every option; the README documents them.\n";
 
+#include <errno.h>
+#include <string.h>
 #include <spcontact.h>
 
 /* User-input errors print one line on rank 0 (no PETSc traceback); everything else keeps
@@ -15,6 +17,55 @@ static PetscErrorCode ErrorHandler(MPI_Comm comm, int line, const char *fun, con
     return n;
   }
   return PetscTraceBackErrorHandler(comm, line, fun, file, n, p, mess, ctx);
+}
+
+/* Before PetscInitialize (which reads them with an error wall): every -options_file names a
+   readable file. One line on the first rank; returns nonzero if one does not. */
+static int CheckOptionsFiles(int argc, char **argv)
+{
+  const char *rank = getenv("OMPI_COMM_WORLD_RANK") ? getenv("OMPI_COMM_WORLD_RANK") : getenv("PMI_RANK");
+  const int   loud = !rank || !strcmp(rank, "0");
+
+  for (int i = 1; i < argc; ++i) {
+    FILE *fp;
+    if (strcmp(argv[i], "-options_file") && strcmp(argv[i], "-options_file_yaml")) continue;
+    if (i + 1 >= argc) {
+      if (loud) fprintf(stderr, "spcontact: error: %s needs a file name\n", argv[i]);
+      return 1;
+    }
+    fp = fopen(argv[i + 1], "r");
+    if (!fp) {
+      if (loud) fprintf(stderr, "spcontact: error: %s %s: cannot read the file (%s); check the path\n", argv[i], argv[i + 1], strerror(errno));
+      return 1;
+    }
+    fclose(fp);
+  }
+  return 0;
+}
+
+/* Options nobody read (a misspelt name, or an option for another kind of run) are reported on
+   stderr after a run, one line each, unless -options_left is given (false: silent; true: PETSc's
+   own report). Defaults the code itself sets for objects a run may not create are not reported. */
+static PetscErrorCode ReportUnusedOptions(void)
+{
+  static const char *const own[] = {"mg_levels_ksp_chebyshev_esteig", "pc_gamg_reuse_interpolation", "dm_plex_simplex", "petscspace_degree"};
+  PetscInt                 n;
+  char                   **names, **values;
+  PetscBool                set, mine;
+  PetscMPIInt              rank;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsHasName(NULL, NULL, "-options_left", &set));
+  if (set) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCallMPI(MPI_Comm_rank(PETSC_COMM_WORLD, &rank));
+  PetscCall(PetscOptionsLeftGet(NULL, &n, &names, &values));
+  for (PetscInt i = 0; i < n && rank == 0; ++i) {
+    mine = PETSC_FALSE;
+    for (size_t k = 0; k < sizeof(own) / sizeof(own[0]); ++k) mine = mine || !strcmp(names[i], own[k]);
+    if (!mine) fprintf(stderr, "spcontact: warning: option -%s was not used (misspelt, or not for this kind of run; see -help); -options_left false silences this\n", names[i]);
+  }
+  PetscCall(PetscOptionsLeftRestore(NULL, &n, &names, &values));
+  PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 static PetscErrorCode Run(PetscBool *converged, int *interrupted)
@@ -43,6 +94,7 @@ int main(int argc, char **argv)
   PetscBool      converged = PETSC_FALSE;
   int            interrupted = 0; /* the signal that stopped the run */
 
+  if (CheckOptionsFiles(argc, argv)) return 1;
   PetscCall(PetscInitialize(&argc, &argv, NULL, help));
   PetscCall(PetscPushErrorHandler(ErrorHandler, NULL));
   ierr = Run(&converged, &interrupted);
@@ -51,6 +103,7 @@ int main(int argc, char **argv)
     return 1; /* bad input: one line on stderr */
   }
   if (ierr) PETSCABORT(PETSC_COMM_WORLD, ierr);
+  PetscCall(ReportUnusedOptions());
   if (interrupted) { /* SPLoadingRun printed how to restart */
     PetscCall(PetscFinalize());
     return 128 + interrupted;

@@ -6,7 +6,8 @@
 static PetscErrorCode CheckMeshFile(MPI_Comm comm, const char file[])
 {
   PetscMPIInt rank;
-  int         status = 0; /* 0 ok, 1 missing, 2 not gmsh */
+  int         status = 0; /* 0 ok, 1 missing, 2 not gmsh, 3 unsupported version */
+  char        version[32] = "";
 
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
@@ -16,12 +17,16 @@ static PetscErrorCode CheckMeshFile(MPI_Comm comm, const char file[])
     if (!fp) status = 1;
     else {
       if (!fgets(line, sizeof(line), fp) || strncmp(line, "$MeshFormat", 11)) status = 2;
+      else if (!fgets(line, sizeof(line), fp) || sscanf(line, "%31s", version) != 1) status = 2;
+      else if (strncmp(version, "2.2", 3) && strncmp(version, "4", 1)) status = 3; /* PETSc 3.18 reads 2.2 and 4.x */
       fclose(fp);
     }
   }
   PetscCallMPI(MPI_Bcast(&status, 1, MPI_INT, 0, comm));
+  PetscCallMPI(MPI_Bcast(version, sizeof(version), MPI_CHAR, 0, comm));
   PetscCheck(status != 1, comm, PETSC_ERR_USER_INPUT, "-mesh_file %s: cannot open the file (check the path; run `make meshes` to build input/*.geo into build/mesh/)", file);
   PetscCheck(status != 2, comm, PETSC_ERR_USER_INPUT, "-mesh_file %s: not a gmsh mesh (no $MeshFormat header); give a .msh written by gmsh", file);
+  PetscCheck(status != 3, comm, PETSC_ERR_USER_INPUT, "-mesh_file %s: gmsh format %s is not supported; write format 4.1 or 2.2 (gmsh -format msh41, or File > Export), or convert it with scripts/convert-mesh", file, version);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -78,6 +83,51 @@ static PetscErrorCode Distribute(DM *dm, const char partitioner[])
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Every cell must have a positive Jacobian determinant at its quadrature points (tensor cells:
+   2^dim Gauss points; simplices: affine) and not be flat: detJ / prod_k |J e_k| (1 for a square,
+   0 for a flat cell; scale-free) above 1e-8. One line otherwise. */
+static PetscErrorCode CheckCells(DM dm)
+{
+  PetscQuadrature q = NULL;
+  PetscInt        dim, cStart, cEnd, nq = 1, bad = -1, kind = 0, badAll[2];
+  PetscReal      *v0, *J, *invJ, *detJ, shape = 1.0;
+  DMPolytopeType  ct;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMGetCoordinatesLocalSetUp(dm)); /* collective, before the per-cell geometry */
+  PetscCall(DMGetDimension(dm, &dim));
+  PetscCall(DMPlexGetHeightStratum(dm, 0, &cStart, &cEnd));
+  if (cEnd > cStart) {
+    PetscCall(DMPlexGetCellType(dm, cStart, &ct));
+    if (ct == DM_POLYTOPE_QUADRILATERAL || ct == DM_POLYTOPE_HEXAHEDRON) {
+      PetscCall(PetscDTGaussTensorQuadrature(dim, 1, 2, -1.0, 1.0, &q));
+      nq = 1 << dim;
+    }
+  }
+  PetscCall(PetscMalloc4(nq * dim, &v0, nq * dim * dim, &J, nq * dim * dim, &invJ, nq, &detJ));
+  for (PetscInt c = cStart; c < cEnd && bad < 0; ++c) {
+    PetscCall(DMPlexComputeCellGeometryFEM(dm, c, q, v0, J, invJ, detJ));
+    for (PetscInt k = 0; k < nq && bad < 0; ++k) {
+      PetscReal cols = 1.0;
+      for (PetscInt j = 0; j < dim; ++j) {
+        PetscReal n2 = 0.0;
+        for (PetscInt i = 0; i < dim; ++i) n2 += PetscSqr(J[k * dim * dim + i * dim + j]);
+        cols *= PetscSqrtReal(n2);
+      }
+      shape = cols > 0.0 ? detJ[k] / cols : 0.0;
+      if (detJ[k] < 0.0) bad = c, kind = 1;
+      else if (!(shape > 1e-8)) bad = c, kind = 2;
+    }
+  }
+  PetscCall(PetscFree4(v0, J, invJ, detJ));
+  PetscCall(PetscQuadratureDestroy(&q));
+  badAll[0] = bad >= 0 ? 1 : 0, badAll[1] = kind;
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, badAll, 2, MPIU_INT, MPI_MAX, PetscObjectComm((PetscObject)dm)));
+  PetscCheck(badAll[1] != 1, PetscObjectComm((PetscObject)dm), PETSC_ERR_USER_INPUT, "the mesh has inverted cells (negative Jacobian determinant): reorder their vertices (gmsh: Mesh > Reverse), or check -dm_plex_box_lower/upper");
+  PetscCheck(badAll[1] != 2, PetscObjectComm((PetscObject)dm), PETSC_ERR_USER_INPUT, "the mesh has degenerate (flat) cells (detJ / edge lengths below 1e-8): fix the mesh or the box extents");
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode SPMeshCreate(MPI_Comm comm, DM *dm)
 {
   char file[PETSC_MAX_PATH_LEN] = "", partitioner[64] = "metis";
@@ -100,6 +150,7 @@ PetscErrorCode SPMeshCreate(MPI_Comm comm, DM *dm)
   PetscCall(DMPlexDistributeSetDefault(*dm, PETSC_FALSE));
   PetscCall(DMSetFromOptions(*dm));
   PetscCall(Distribute(dm, partitioner));
+  PetscCall(CheckCells(*dm));
   PetscCall(PetscObjectSetName((PetscObject)*dm, "mesh"));
   PetscCall(DMViewFromOptions(*dm, NULL, "-dm_view"));
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -1,0 +1,110 @@
+# Bad input and I/O errors (issue 12): each case must exit nonzero (not by a signal) with exactly
+# one "spcontact: error:" line naming the cause, no PETSc/HDF5 error line, and no final-named output
+# file (bad_input_cases in tests/lib.sh). Checked before the solve: label kinds and values, option
+# vector lengths against the mesh dimension, finite numbers, penalty range (eps h / E in 1e-3..1e8),
+# inverted and flat cells, unsupported mesh versions, missing files; plus the unused-option report.
+# The other case files hold their own module's bad-input cases (foundation, contact, pairs,
+# materials, friction, units, restart).
+
+test_bad_input_catalogue() {
+  printf '$MeshFormat\n3.0 0 8\n$EndMeshFormat\n' > "$CASE_DIR/v3.msh"
+  printf '$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Nodes\n' > "$CASE_DIR/truncated.msh"
+  mkdir -p "$CASE_DIR/taken.h5"
+  sed -e "s|@DIR@|$CASE_DIR|g" <<'CASES' | bad_input_cases
+contact label on cells|input/hertz2d.opts|-contact_label "Cell Sets" -contact_values 1
+contact value without points|input/hertz2d.opts|-contact_values 99
+bc value without points|input/hertz2d.opts|-bc_1_values 77
+contact label missing|input/hertz2d.opts|-contact_label nosuch
+penalty 1e300 (eps h / E far above 1e8)|input/hertz2d.opts|-contact_method penalty -contact_penalty 1e300
+penalty 1e-9 (eps h / E far below 1e-3)|input/hertz2d.opts|-contact_penalty 1e-9
+penalty negative|input/hertz2d.opts|-contact_penalty -5
+penalty nan|input/hertz2d.opts|-contact_penalty nan
+alpha zero|input/hertz2d.opts|-contact_alpha 0
+alpha nan|input/hertz2d.opts|-contact_alpha nan
+alpha 1e20|input/hertz2d.opts|-contact_alpha 1e20
+friction alpha 1e-6|input/friction_block2d.opts|-contact_friction_alpha 1e-6
+2D obstacle normal on a 3D mesh|input/hertz3d.opts|-contact_obstacle_0_normal 0,1
+1-component obstacle normal on a 3D mesh|input/hertz3d.opts|-contact_obstacle_0_normal 1
+3D obstacle point on a 2D mesh|input/hertz2d.opts|-contact_obstacle_0_point 0,0,0
+obstacle motion with 2 components on a 3D mesh|input/indent3d.opts|-contact_obstacle_0_motion 0,-0.03
+obstacle point not a number|input/hertz2d.opts|-contact_obstacle_0_point 0,nan
+zero obstacle normal|input/hertz2d.opts|-contact_obstacle_0_normal 0,0
+negative sphere radius|input/hertz2d.opts|-contact_obstacle_0_type sphere -contact_obstacle_0_radius -1
+unknown obstacle type|input/hertz2d.opts|-contact_obstacle_0_type cone
+unknown method (typo)|input/hertz2d.opts|-contact_method shifty
+E negative|input/hertz2d.opts|-material_E -1
+E nan|input/hertz2d.opts|-material_E nan
+nu 0.5|input/hertz2d.opts|-material_nu 0.5
+nu -1|input/hertz2d.opts|-material_nu -1
+unknown material law|input/hertz2d.opts|-material_model rubber
+load steps 0|input/hertz2d.opts|-load_steps 0
+load steps not an integer|input/hertz2d.opts|-load_steps 2.5
+mesh file missing|input/hertz2d.opts|-mesh_file /nonexistent/mesh.msh
+mesh file not a mesh|input/hertz2d.opts|-mesh_file input/hertz2d.opts
+gmsh format 3 (unsupported) named|input/hertz2d.opts|-mesh_file @DIR@/v3.msh
+truncated gmsh file|input/hertz2d.opts|-mesh_file @DIR@/truncated.msh
+options file missing|input/hertz2d.opts|-options_file /nonexistent.opts
+bc type unknown|input/hertz2d.opts|-bc_1_type force_field
+bc component out of range (2D)|input/hertz2d.opts|-bc_0_components 2
+bc component out of range (3D)|input/hertz3d.opts|-bc_0_components 3
+pressure with 2 values|input/hertz2d.opts|-bc_1_value 0.005,0.1
+traction with 3 values in 2D|input/block2d.opts|-bc_1_type traction -bc_1_value 1,2,3
+Dirichlet value nan|input/block2d.opts|-bc_0_value nan
+pressure inf|input/hertz2d.opts|-bc_1_value inf
+load curve reversed|input/hertz2d.opts|-bc_1_ramp 1,0
+friction coefficient negative|input/hertz2d.opts|-contact_friction_mu -0.1
+friction coefficient nan|input/hertz2d.opts|-contact_friction_mu nan
+FE degree 0|input/hertz2d.opts|-petscspace_degree 0
+output directory is a file|input/hertz2d.opts|-output_dir /etc/hostname
+output directory not writable|input/hertz2d.opts|-output_dir /proc/spcontact
+output name taken by a directory|input/block2d.opts|-output_dir @DIR@ -output_name taken
+gap rtol negative|input/hertz2d.opts|-contact_gap_rtol -1
+gap tol zero|input/hertz2d.opts|-contact_gap_tol 0
+cut-back budget negative|input/hertz2d.opts|-load_max_cutbacks -1
+minimum increment above 1|input/hertz2d.opts|-load_min_increment 2
+wall time negative|input/hertz2d.opts|-max_wall_time -5
+stall iterations negative|input/hertz2d.opts|-solver_stall_its -1
+restart file missing|input/hertz2d.opts|-restart /nonexistent.h5
+pair master value missing|input/hertz2d_twobody.opts|-contact_pair_0_master_values 42
+pair slave equals master|input/hertz2d_twobody.opts|-contact_pair_0_master_values 3 -contact_pair_0_slave_values 3
+inverted cells (box bounds reversed)|input/block2d.opts|-dm_plex_box_lower 1,0 -dm_plex_box_upper 0,1
+flat cells (zero box width)|input/block2d.opts|-dm_plex_box_upper 0,1
+manufactured solution with contact|input/hertz2d.opts|-material_mms 0.01
+augmentation budget zero|input/hertz2d.opts|-contact_method alm -contact_alm_max 0
+CASES
+}
+
+# The same checks on 2 ranks for a subset (one line from rank 0, every rank stops)
+test_bad_input_catalogue_np2() {
+  local rc=0 i=0 why args code
+  while IFS='|' read -r why args; do
+    i=$((i + 1))
+    # shellcheck disable=SC2086
+    spc "$CASE_DIR/o$i.txt" 2 -options_file input/hertz2d.opts -output_dir "$CASE_DIR" $args; code=$?
+    if [ $code -ne 0 ] && [ "$(grep -c '^spcontact: error:' "$CASE_DIR/o$i.txt")" -eq 1 ] && ! grep -q 'PETSC ERROR' "$CASE_DIR/o$i.txt"; then
+      echo "ok   $why (2 ranks): $(grep '^spcontact: error:' "$CASE_DIR/o$i.txt")"
+    else echo "FAIL $why (2 ranks, exit $code)"; rc=1; fi
+  done <<'CASES'
+contact value without points|-contact_values 99
+3D point on a 2D mesh|-contact_obstacle_0_point 0,0,0
+penalty 1e300|-contact_penalty 1e300
+options file missing|-options_file /nonexistent.opts
+mesh file not a mesh|-mesh_file input/hertz2d.opts
+CASES
+  [ -z "$(ls "$CASE_DIR" | grep -E '\.(h5|xmf|csv)$')" ] || { echo "final-named output written"; rc=1; }
+  return $rc
+}
+
+# A misspelt option is reported (one warning line per unused option) and the run is otherwise
+# the default one; -options_left false silences the report
+test_bad_input_unused_option() {
+  local rc=0
+  spc "$CASE_DIR/typo.txt" 1 -options_file input/block2d.opts -contact_methd penalty -output_dir "$CASE_DIR" -output_name typo || rc=1
+  grep '^spcontact: warning: option -contact_methd was not used' "$CASE_DIR/typo.txt" || { echo "no report of -contact_methd"; rc=1; }
+  assert_eq warnings "$(grep -c '^spcontact: warning:' "$CASE_DIR/typo.txt")" 1 || rc=1
+  spc "$CASE_DIR/quiet.txt" 1 -options_file input/block2d.opts -contact_methd penalty -options_left false -output_dir "$CASE_DIR" -output_name quiet || rc=1
+  assert_eq warnings_silenced "$(grep -c 'warning' "$CASE_DIR/quiet.txt")" 0 || rc=1
+  spc "$CASE_DIR/clean.txt" 1 -options_file input/hertz2d.opts -output_dir "$CASE_DIR" -output_name clean || rc=1
+  assert_eq warnings_clean_run "$(grep -c 'warning' "$CASE_DIR/clean.txt")" 0 || rc=1
+  return $rc
+}
