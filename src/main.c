@@ -99,16 +99,19 @@ int main(int argc, char **argv)
   PetscCall(PetscPushErrorHandler(ErrorHandler, NULL));
   ierr = Run(&converged, &interrupted);
   if (ierr == PETSC_ERR_USER_INPUT || ierr == PETSC_ERR_USER || ierr == PETSC_ERR_ARG_OUTOFRANGE || ierr == PETSC_ERR_ARG_WRONG) {
+    (void)PetscPopErrorHandler();
     (void)PetscFinalize();
     return 1; /* bad input: one line on stderr */
   }
   if (ierr) PETSCABORT(PETSC_COMM_WORLD, ierr);
   PetscCall(ReportUnusedOptions());
   if (interrupted) { /* SPLoadingRun printed how to restart */
+    PetscCall(PetscPopErrorHandler());
     PetscCall(PetscFinalize());
     return 128 + interrupted;
   }
   if (!converged) PetscCall(PetscPrintf(PETSC_COMM_WORLD, "spcontact: the solve did not converge; results above are for the last converged load step only\n"));
+  PetscCall(PetscPopErrorHandler());
   PetscCall(PetscFinalize());
   return converged ? 0 : 2;
 }
