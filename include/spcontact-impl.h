@@ -234,6 +234,8 @@ struct _n_SPContact {
   PetscReal       evalLoad;    /* its load factor */
   PetscInt        evaluations; /* evaluations done (requests for an unchanged state cost nothing) */
   PetscInt        stepLimits;  /* Newton steps scaled by the step control (their trial iterate is evaluated too) */
+  PetscReal       alphaMax;      /* the largest eps h / E at a contact point (the effective alpha) */
+  PetscInt        activeVersion; /* moves when the active set (with friction: the stick/slip state) may have changed */
   PetscInt        shiftUpdates; /* Newton-iteration boundaries and converged solves at which the shifts moved */
   PetscBool       centreSet;
   PetscReal       centre[3];
@@ -337,6 +339,12 @@ struct _n_SPSolver {
   PetscInt            stallIts, sinceProgress; /* stagnation: stop after stallIts iterations without progress */
   PetscReal           bestF, bestGap;
   PetscBool           stalled;
+  PetscInt            jacReuseMax, jacReused, jacVersion, jacReuses; /* Jacobian reuse on an unchanged active set */
+  PetscBool           jacValid;
+  PetscBool           inexact;              /* linear tolerance from the Newton iteration's progress */
+  PetscReal           rtolMax, rtolMin, rtol, rtolCap, lastF; /* its range (rtolMin: -ksp_rtol), value, safeguard cap, previous |F| */
+  PetscBool           resolve, lastConverged; /* this solve repeats a converged one at the same load (after a shift update) */
+  PetscReal           lastLoad;
 };
 
 struct _n_SPOutput {

@@ -24,8 +24,9 @@
 #   it/floor     (solve stage / Newton iterations) / (floor solve stage): cost of a Newton
 #                iteration in units of the elasticity solve
 #   mem_MiB      peak resident memory of the largest rank (summary memory_peak_rank_mib)
-# Output: the table on stdout, DIR/bench.csv, and every run's stdout and log in DIR (default
-# build/bench). Timings are never part of `make check`.
+# Output: the table on stdout, DIR/bench.csv, DIR/bench.png (log-log wall time against dofs per
+# method and rank count, with the fitted exponents printed; needs two sizes or more), and every
+# run's stdout and log in DIR (default build/bench). Timings are never part of `make check`.
 cd "$(dirname "$0")/.." || exit 1
 source scripts/env.sh
 sizes=12; ranks=1; methods=penalty,shifted,alm; floor=1; out=build/bench; extra=()
@@ -45,7 +46,8 @@ make -s bin/spcontact >/dev/null || exit 1
 mkdir -p "$out"
 grep -v '^-contact' input/indent3d.opts > "$out/floor.opts"
 cat >> "$out/floor.opts" <<'EOF'
-# floor: no contact; the top face z = 0 pushed down by 0.01 (one linear solve)
+# floor: no contact; the top face z = 0 pushed down by 0.01 (one linear solve, to -ksp_rtol)
+-solver_inexact false
 -bc_3_type dirichlet
 -bc_3_values 2
 -bc_3_components 2
@@ -69,3 +71,4 @@ for n in ${sizes//,/ }; do
   done
 done
 $PYTHON scripts/bench_table.py "$out" "${runs[@]}"
+$PYTHON scripts/bench_plot.py "$out/bench.csv" "$out/bench.png"

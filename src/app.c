@@ -156,7 +156,7 @@ static PetscReal PeakMemoryMiB(void)
 PetscErrorCode SPAppSummary(SPApp a)
 {
   PetscViewer    v = PETSC_VIEWER_STDOUT_(a->comm);
-  PetscInt       newton, linear, functions;
+  PetscInt       newton, linear, functions, reuses;
   PetscReal      umax, err;
   PetscBool      hasErr, on;
   PetscLogDouble t1;
@@ -173,6 +173,8 @@ PetscErrorCode SPAppSummary(SPApp a)
   PetscCall(PetscViewerASCIIPrintf(v, "status %s\n", RunStatus(a)));
   PetscCall(PetscViewerASCIIPrintf(v, "converged %s\nload_steps %" PetscInt_FMT "\ncutbacks %" PetscInt_FMT "\nload_factor %g\n", a->converged ? "yes" : "no", a->stepsDone, a->cutbacks, (double)a->loadReached));
   PetscCall(PetscViewerASCIIPrintf(v, "newton_iterations %" PetscInt_FMT "\nlinear_iterations %" PetscInt_FMT "\nfunction_evaluations %" PetscInt_FMT "\n", newton, linear, functions));
+  PetscCall(SPSolverGetJacobianReuses(a->solver, &reuses));
+  PetscCall(PetscViewerASCIIPrintf(v, "jacobian_reuses %" PetscInt_FMT "\n", reuses));
   PetscCall(SPSolverGetBulkOperator(a->solver, &bulk));
   PetscCall(PetscViewerASCIIPrintf(v, "bulk_operator %s\n", bulk));
   PetscCall(PetscViewerASCIIPrintf(v, "displacement_max %.10e\n", (double)umax));
