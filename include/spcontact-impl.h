@@ -336,7 +336,7 @@ struct _n_SPSolver {
   PetscReal           r0Load;
   PetscReal           atolRel, fscale; /* residual atol = atolRel x fscale (largest initial |F| of the run) unless -snes_atol */
   PetscBool           userAtol;
-  PetscInt            stallIts, sinceProgress; /* stagnation: stop after stallIts iterations without progress */
+  PetscInt            stallIts, sinceProgress, cycling; /* stagnation: stop after stallIts iterations without progress (cycling: of them, with active-set changes) */
   PetscReal           bestF, bestGap;
   PetscBool           stalled;
   PetscInt            jacReuseMax, jacReused, jacVersion, jacReuses; /* Jacobian reuse on an unchanged active set */

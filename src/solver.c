@@ -287,14 +287,21 @@ static PetscErrorCode CheckStall(SPSolver s, PetscInt it, PetscReal fnorm, SNESC
     s->sinceProgress      = 0;
     PetscFunctionReturn(PETSC_SUCCESS);
   }
-  if (fnorm < 0.99 * s->bestF || st.gapError < 0.99 * s->bestGap) s->sinceProgress = 0;
-  else s->sinceProgress++;
+  if (fnorm < 0.99 * s->bestF || st.gapError < 0.99 * s->bestGap) s->sinceProgress = s->cycling = 0;
+  else {
+    s->sinceProgress++;
+    if (st.activeChanged > 0) s->cycling++;
+  }
   s->bestF   = PetscMin(s->bestF, fnorm);
   s->bestGap = PetscMin(s->bestGap, on ? st.gapError : 0.0);
   if (s->stallIts <= 0 || s->sinceProgress < s->stallIts || *reason != SNES_CONVERGED_ITERATING) PetscFunctionReturn(PETSC_SUCCESS);
   s->stalled = PETSC_TRUE;
   *reason    = SNES_DIVERGED_DTOL;
   PetscCall(PetscPrintf(PetscObjectComm((PetscObject)s->dm), "solve stalled: neither the residual (lowest %.3e) nor the gap error (lowest %.3e) decreased in %" PetscInt_FMT " Newton iterations (-solver_stall_its)\n", (double)s->bestF, (double)s->bestGap, s->stallIts));
+  /* an active set that changes at every iteration without progress cycles (semismooth Newton
+     between two sets, as two-pass contact on a curved non-matching interface at high alpha, where
+     the two passes cannot close every gap of both surfaces at once) */
+  if (2 * s->cycling >= s->stallIts) PetscCall(PetscPrintf(PetscObjectComm((PetscObject)s->dm), "solve stalled: the active set changed in %" PetscInt_FMT " of those iterations (an active-set cycle): with -contact_two_pass use one pass or -contact_alpha about 100; otherwise more load steps (-load_steps) or a smaller -contact_alpha\n", s->cycling));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

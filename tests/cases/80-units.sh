@@ -84,8 +84,11 @@ test_units_cutback_floor() {
 # The two-pass curved stall (issue 12): two-pass shifted on the two-body Hertz case. alpha 100
 # converges; at alpha 1000 the semismooth Newton iteration cycles between two active sets (period
 # 2, ~19 points flip, the shift never updates): the stagnation test stops each solve after
-# -solver_stall_its iterations without progress with one line naming the stall, and the cut-back
-# budget ends the run: both solves end STALLED, before -snes_max_it (50) each.
+# -solver_stall_its iterations without progress with one line naming the stall and one naming
+# its cause (the active set changed at every one of them) and what to use instead, and the
+# cut-back budget ends the run: both solves end STALLED, before -snes_max_it (50) each. Why it
+# cycles: on a curved non-matching interface the two passes cannot close every gap of both
+# surfaces at once, so the shifts of the two sides compete for the same points.
 test_units_twopass_stall() {
   local out rc=0 code n
   out=$CASE_DIR/a100.txt
@@ -100,6 +103,8 @@ test_units_twopass_stall() {
   assert_eq exit_code_alpha1000 "$code" 2 || rc=1
   assert_eq stall_lines "$(grep -c '^solve stalled: neither the residual .* nor the gap error .* decreased in 15 Newton iterations (-solver_stall_its)' "$out")" 2 || rc=1
   assert_eq stalled_reason "$(grep -c 'solve did not converge (STALLED)' "$out")" 2 || rc=1
+  # the stall names its cause (an active-set cycle) and what to use instead
+  assert_eq cycle_lines "$(grep -c '^solve stalled: the active set changed in 15 of those iterations (an active-set cycle): with -contact_two_pass use one pass' "$out")" 2 || rc=1
   assert_eq cutbacks "$(sval "$out" cutbacks)" 1 || rc=1
   assert_le newton_bounded "$n" 98 || rc=1
   return $rc
