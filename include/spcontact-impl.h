@@ -344,7 +344,7 @@ struct _n_SPSolver {
   PetscBool           inexact;              /* linear tolerance from the Newton iteration's progress */
   PetscReal           rtolMax, rtolMin, rtol, rtolCap, lastF; /* its range (rtolMin: -ksp_rtol), value, safeguard cap, previous |F| */
   PetscBool           resolve, lastConverged; /* this solve repeats a converged one at the same load (after a shift update) */
-  PetscReal           lastLoad;
+  PetscReal           lastLoad, settledFactor;
 };
 
 struct _n_SPOutput {

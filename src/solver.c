@@ -305,17 +305,19 @@ static PetscErrorCode CheckStall(SPSolver s, PetscInt it, PetscReal fnorm, SNESC
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Inexact Newton: each linear solve only as accurate as the Newton iteration can use
-   (Eisenstat-Walker's second choice, eta = 0.9 (|F_k|/|F_k-1|)^2, within [-ksp_rtol, etaMax]):
-   loose while the active set is searched or the shift contracts slowly (the next shift update
-   changes the system by more than the solve's error), tight when the iteration contracts fast.
-   etaMax is -solver_inexact_rtol, and at most a tenth of the shift's contraction per update
-   1/(1 + alpha) (a looser step moves the next shift by more than the update itself removes:
-   measured on B2 at alpha 1000, +3 Newton iterations at 1e-3, +1 at 1e-4). Two safeguards: an iteration that does not contract
-   (|F| not halved, and no shift update that raised it on purpose) caps eta 100x lower for the rest
-   of the solve (an active set that chatters under loose solves at high penalty settles once the
-   solves are tight), and no solve goes below what reaches the residual target (half of it) in
-   one step, which also makes a re-solve at the same load (alm after an augmentation) one exact step. */
+/* Inexact Newton: a linear solve is loose only where its error is thrown away. A step from an
+   iterate whose active set just changed is a search step: the next iterate's active set decides
+   the following step, and eta = etaMax, with etaMax = min(-solver_inexact_rtol, 0.1/(1 + alpha))
+   (a tenth of the shift's contraction per update; at 1e-3 B2 at alpha 1000 took +3 Newton
+   iterations). Every other step (a solve's first, or from a settled active set) feeds a shift
+   update, and the update inherits the step's error (on B1, where one exact update suffices,
+   etaMax there cost +3): eta = -solver_inexact_settled x etaMax. Within both,
+   Eisenstat-Walker's second choice 0.9 (|F_k|/|F_k-1|)^2 tightens a fast-contracting iteration.
+   Safeguards: an iteration that does not halve |F| (with no shift update that raised it on
+   purpose) lowers etaMax 100x for the rest of the solve (fixed loose solves at alpha 1000 made
+   the active set chatter for thousands of iterations); no solve is tighter than what reaches 1%
+   of the residual target in one step; a re-solve at the same load (alm after an augmentation)
+   starts at -ksp_rtol. The floor is always -ksp_rtol. */
 static PetscErrorCode LinearTolerance(SPSolver s, PetscInt it, PetscReal fnorm)
 {
   SPContactStats st = {0};
@@ -333,13 +335,15 @@ static PetscErrorCode LinearTolerance(SPSolver s, PetscInt it, PetscReal fnorm)
     PetscReal rho;
     PetscCall(SPContactGetShiftContraction(s->contact, &rho));
     s->rtolCap = PetscMax(s->rtolMin, PetscMin(s->rtolMax, 0.1 * rho));
-    eta        = s->resolve ? s->rtolMin : s->rtolCap;
+    eta        = s->resolve ? s->rtolMin : s->settledFactor * s->rtolCap;
   } else {
     const PetscReal r = fnorm / s->lastF;
     if (r > 0.5 && st.maxShiftChange == 0.0) s->rtolCap = PetscMax(s->rtolMin, 1e-2 * s->rtolCap);
     eta = r < 1.0 ? PetscMin(s->rtolCap, 0.9 * r * r) : s->rtolCap;
+    /* settled active set: the step feeds the next shift update, whose error it becomes */
+    if (!st.activeChanged) eta = PetscMin(eta, s->settledFactor * s->rtolCap);
   }
-  if (fnorm > 0.0) eta = PetscMin(0.5, PetscMax(eta, 0.5 * target / fnorm));
+  if (fnorm > 0.0) eta = PetscMin(0.5, PetscMax(eta, 0.01 * target / fnorm));
   s->rtol  = PetscMax(s->rtolMin, eta);
   s->lastF = fnorm;
   PetscCall(SNESGetKSP(s->snes, &ksp));
@@ -404,8 +408,8 @@ PetscErrorCode SPSolverCreate(DM dm, SPProblem problem, SPContact contact, SPLog
   s->atolRel  = 1e-10;
   s->stallIts = 15;
   s->jacReuseMax = 5;
-  s->inexact     = PETSC_TRUE;
   s->rtolMax     = 1e-3;
+  s->settledFactor = 1e-3;
   /* a load-controlled body touching at one point legitimately raises |F| at first */
   PetscCall(SNESSetDivergenceTolerance(s->snes, -1.0));
   PetscCall(SNESGetKSP(s->snes, &ksp));
@@ -445,23 +449,33 @@ PetscErrorCode SPSolverSetFromOptions(SPSolver s)
 {
   SNESLineSearch ls;
   PetscBool      on;
-  PetscBool      fast = PETSC_TRUE, prealloc = PETSC_TRUE, linear;
+  PetscBool      fast = PETSC_TRUE, prealloc = PETSC_TRUE, linear, friction, testJ;
 
   PetscFunctionBeginUser;
   PetscCall(SPProblemIsLinear(s->problem, &s->reuse));
+  PetscCall(SPContactHasFriction(s->contact, &friction));
+  /* inexact Newton by default where it was designed and measured: a linear bulk without friction
+     (GMRES on a finite-strain or stick/slip tangent: on demand) */
+  s->inexact = s->reuse && !friction ? PETSC_TRUE : PETSC_FALSE;
+  PetscCall(PetscOptionsHasName(NULL, NULL, "-snes_test_jacobian", &testJ));
   PetscOptionsBegin(PetscObjectComm((PetscObject)s->dm), NULL, "Solver options", "spcontact");
   PetscCall(PetscOptionsBool("-solver_linear_reuse", "Linear material: assemble the bulk stiffness K once and use r(u) = r0(load) + K u (false: bulk residual/Jacobian every time)", "SPSolverSetFromOptions", s->reuse, &s->reuse, NULL));
   PetscCall(PetscOptionsBool("-solver_fast_bulk", "Element-level isotropic elasticity for P1/Q1 cells instead of PetscFE where it applies (false: always PetscFE)", "SPSolverSetFromOptions", fast, &fast, NULL));
   PetscCall(PetscOptionsBool("-solver_check_fast", "Verification: compare the fast and the PetscFE bulk residual/Jacobian (and the matrix pattern with DMCreateMatrix's) once, print the relative differences", "SPSolverSetFromOptions", s->checkFast, &s->checkFast, NULL));
   PetscCall(PetscOptionsReal("-solver_atol_rel", "Absolute residual tolerance relative to the largest initial residual norm of the run (the out-of-balance load); -snes_atol replaces it by an absolute one", "SPSolverSetFromOptions", s->atolRel, &s->atolRel, NULL));
   PetscCall(PetscOptionsInt("-solver_jacobian_reuse", "Linear material: keep the assembled Jacobian and its preconditioner for at most this many Newton iterations in a row while the active set does not change (0: assemble every iteration)", "SPSolverSetFromOptions", s->jacReuseMax, &s->jacReuseMax, NULL));
-  PetscCall(PetscOptionsBool("-solver_inexact", "Inexact Newton: linear tolerance -solver_inexact_rtol, tightened 100x (down to -ksp_rtol) whenever a Newton iteration does not halve |F| (false: every solve to -ksp_rtol)", "SPSolverSetFromOptions", s->inexact, &s->inexact, NULL));
+  PetscCall(PetscOptionsBool("-solver_inexact", "Inexact Newton: search steps to -solver_inexact_rtol, steps that feed a shift update tighter (README Performance); default true for a linear material without friction (false: every solve to -ksp_rtol)", "SPSolverSetFromOptions", s->inexact, &s->inexact, NULL));
   PetscCall(PetscOptionsReal("-solver_inexact_rtol", "Inexact Newton: the loosest linear relative tolerance", "SPSolverSetFromOptions", s->rtolMax, &s->rtolMax, NULL));
+  PetscCall(PetscOptionsReal("-solver_inexact_settled", "Inexact Newton: factor on the loosest linear tolerance for a step from an iterate whose active set did not change (the step then feeds a shift update), and for a solve's first step", "SPSolverSetFromOptions", s->settledFactor, &s->settledFactor, NULL));
   PetscCall(PetscOptionsInt("-solver_stall_its", "Stop a Newton solve after this many iterations without a 1% decrease of the residual or the gap error (0: never)", "SPSolverSetFromOptions", s->stallIts, &s->stallIts, NULL));
   PetscCall(PetscOptionsBool("-solver_fast_prealloc", "First-order mesh: preallocate the matrix from vertex adjacency and build the rigid-body modes from vertex coordinates (false: DMCreateMatrix, DMPlexCreateRigidBody)", "SPSolverSetFromOptions", prealloc, &prealloc, NULL));
   PetscOptionsEnd();
   PetscCheck(s->atolRel >= 0.0 && s->atolRel < 1.0, PetscObjectComm((PetscObject)s->dm), PETSC_ERR_USER_INPUT, "-solver_atol_rel %g: must be in [0, 1)", (double)s->atolRel);
   PetscCheck(s->stallIts >= 0, PetscObjectComm((PetscObject)s->dm), PETSC_ERR_USER_INPUT, "-solver_stall_its %" PetscInt_FMT ": must be >= 0 (0: no stagnation test)", s->stallIts);
+  PetscCheck(s->jacReuseMax >= 0, PetscObjectComm((PetscObject)s->dm), PETSC_ERR_USER_INPUT, "-solver_jacobian_reuse %" PetscInt_FMT ": must be >= 0 (0: assemble every Newton iteration)", s->jacReuseMax);
+  PetscCheck(s->rtolMax > 0.0 && s->rtolMax < 1.0, PetscObjectComm((PetscObject)s->dm), PETSC_ERR_USER_INPUT, "-solver_inexact_rtol %g: must be in (0, 1) (1e-3 is the default; -solver_inexact false for exact solves)", (double)s->rtolMax);
+  PetscCheck(s->settledFactor > 0.0 && s->settledFactor <= 1.0, PetscObjectComm((PetscObject)s->dm), PETSC_ERR_USER_INPUT, "-solver_inexact_settled %g: must be in (0, 1]", (double)s->settledFactor);
+  if (testJ) s->jacReuseMax = 0; /* -snes_test_jacobian compares the assembled Jacobian at every iterate */
   PetscCall(PetscOptionsHasName(NULL, NULL, "-snes_atol", &s->userAtol));
   PetscCall(SetUpMatrix(s, prealloc));
   if (fast) {
