@@ -3,6 +3,7 @@
 #define SPCONTACT_IMPL_H
 
 #include <spcontact.h>
+#include <hdf5.h>
 #include <kernels/contact-law.h>
 #include <kernels/contact-pair.h>
 
@@ -352,7 +353,17 @@ struct _n_SPOutput {
   PetscBool   contactFields;
   PetscBool   frictionFields; /* tangential_traction, slip, status (runs with friction) */
   PetscBool   pointsFile;     /* the contact-points CSV was written (renamed with the others) */
+  struct {                    /* output-guard.c: the write in progress */
+    char      file[PETSC_MAX_PATH_LEN + 32];
+    PetscBool open, collective; /* collective: HDF5 writes (SPOutputWriteBegin) */
+    int       err;            /* errno of its first failure (0: none yet) */
+    H5E_auto2_t func;         /* HDF5's error printing, restored after the write */
+    void     *data;
+  } guard;
 };
+PETSC_EXTERN PetscErrorCode SPOutputWriteBegin(SPOutput, const char[], PetscBool);
+PETSC_EXTERN PetscErrorCode SPOutputWriteEnd(SPOutput, PetscErrorCode);
+PETSC_EXTERN PetscErrorCode SPOutputCheckStream(FILE *, const char[], PetscBool);
 
 /* signals.c: SIGTERM/SIGINT recorded by a handler, acted on at the load-step loop's safe point */
 typedef struct {

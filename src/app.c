@@ -99,7 +99,8 @@ PetscErrorCode SPAppRun(SPApp a, PetscBool *converged, int *interrupted)
   if (on) {
     char file[PETSC_MAX_PATH_LEN + 32];
     PetscCall(SPOutputGetPointsFile(a->output, file, sizeof(file)));
-    PetscCall(SPContactWritePoints(a->contact, a->u, file));
+    PetscCall(SPOutputWriteBegin(a->output, file, PETSC_FALSE));
+    PetscCall(SPOutputWriteEnd(a->output, SPContactWritePoints(a->contact, a->u, file)));
   }
   PetscCall(SPOutputClose(a->output, a->contact, RunStatus(a), a->stepsDone, a->loadReached));
   PetscCall(PetscLogStagePop());

@@ -3,7 +3,14 @@ static const char help[] = "spcontact: parallel FEM contact mechanics with the s
 
 #include <errno.h>
 #include <string.h>
+#include <unistd.h>
 #include <spcontact.h>
+
+/* The errors reported in one line: bad input, and a failed write of an output file (output-guard.c) */
+static int OneLine(PetscErrorCode n)
+{
+  return n == PETSC_ERR_USER_INPUT || n == PETSC_ERR_USER || n == PETSC_ERR_ARG_OUTOFRANGE || n == PETSC_ERR_ARG_WRONG || n == PETSC_ERR_FILE_WRITE;
+}
 
 /* User-input errors print one line on rank 0 (no PETSc traceback); everything else keeps
    PETSc's full traceback. Set SPCONTACT_TRACEBACK=1 to see the traceback for input errors. */
@@ -11,7 +18,7 @@ static PetscErrorCode ErrorHandler(MPI_Comm comm, int line, const char *fun, con
 {
   PetscMPIInt rank = 0;
   if (p != PETSC_ERROR_INITIAL) return n;
-  if ((n == PETSC_ERR_USER_INPUT || n == PETSC_ERR_USER || n == PETSC_ERR_ARG_OUTOFRANGE || n == PETSC_ERR_ARG_WRONG) && !getenv("SPCONTACT_TRACEBACK")) {
+  if (OneLine(n) && !getenv("SPCONTACT_TRACEBACK")) {
     MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
     if (rank == 0) fprintf(stderr, "spcontact: error: %s\n", mess ? mess : "(no message)");
     return n;
@@ -98,10 +105,14 @@ int main(int argc, char **argv)
   PetscCall(PetscInitialize(&argc, &argv, NULL, help));
   PetscCall(PetscPushErrorHandler(ErrorHandler, NULL));
   ierr = Run(&converged, &interrupted);
-  if (ierr == PETSC_ERR_USER_INPUT || ierr == PETSC_ERR_USER || ierr == PETSC_ERR_ARG_OUTOFRANGE || ierr == PETSC_ERR_ARG_WRONG) {
+  if (ierr == PETSC_ERR_FILE_WRITE) { /* an output write failed: its h5 cannot be closed, and */
+    fflush(NULL);                     /* HDF5 would crash closing it in MPI_Finalize (output-guard.c) */
+    _exit(1);
+  }
+  if (OneLine(ierr)) {
     (void)PetscPopErrorHandler();
     (void)PetscFinalize();
-    return 1; /* bad input: one line on stderr */
+    return 1; /* bad input or a failed write: one line on stderr */
   }
   if (ierr) PETSCABORT(PETSC_COMM_WORLD, ierr);
   PetscCall(ReportUnusedOptions());
