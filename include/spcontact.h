@@ -129,6 +129,9 @@ PETSC_EXTERN PetscErrorCode SPOutputGetPointsFile(SPOutput, char[], size_t);
 PETSC_EXTERN PetscErrorCode SPOutputGetPrefix(SPOutput, const char **);
 PETSC_EXTERN PetscErrorCode SPOutputDestroy(SPOutput *);
 
+/* options-files.c: before PetscInitialize; nonzero (one line printed) if one is unreadable */
+int SPCheckOptionsFiles(int, char **);
+
 /* app.c */
 PETSC_EXTERN PetscErrorCode SPAppCreate(MPI_Comm, SPApp *);
 PETSC_EXTERN PetscErrorCode SPAppSetUp(SPApp);

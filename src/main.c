@@ -1,7 +1,6 @@
 static const char help[] = "spcontact: parallel FEM contact mechanics with the shifted penalty method.\n"
                            "Run `spcontact -help` for every option; the README documents them.\n";
 
-#include <errno.h>
 #include <string.h>
 #include <unistd.h>
 #include <spcontact.h>
@@ -24,30 +23,6 @@ static PetscErrorCode ErrorHandler(MPI_Comm comm, int line, const char *fun, con
     return n;
   }
   return PetscTraceBackErrorHandler(comm, line, fun, file, n, p, mess, ctx);
-}
-
-/* Before PetscInitialize (which reads them with an error wall): every -options_file names a
-   readable file. One line on the first rank; returns nonzero if one does not. */
-static int CheckOptionsFiles(int argc, char **argv)
-{
-  const char *rank = getenv("OMPI_COMM_WORLD_RANK") ? getenv("OMPI_COMM_WORLD_RANK") : getenv("PMI_RANK");
-  const int   loud = !rank || !strcmp(rank, "0");
-
-  for (int i = 1; i < argc; ++i) {
-    FILE *fp;
-    if (strcmp(argv[i], "-options_file") && strcmp(argv[i], "-options_file_yaml")) continue;
-    if (i + 1 >= argc) {
-      if (loud) fprintf(stderr, "spcontact: error: %s needs a file name\n", argv[i]);
-      return 1;
-    }
-    fp = fopen(argv[i + 1], "r");
-    if (!fp) {
-      if (loud) fprintf(stderr, "spcontact: error: %s %s: cannot read the file (%s); check the path\n", argv[i], argv[i + 1], strerror(errno));
-      return 1;
-    }
-    fclose(fp);
-  }
-  return 0;
 }
 
 /* Options nobody read (a misspelt name, or an option for another kind of run) are reported on
@@ -101,7 +76,7 @@ int main(int argc, char **argv)
   PetscBool      converged = PETSC_FALSE;
   int            interrupted = 0; /* the signal that stopped the run */
 
-  if (CheckOptionsFiles(argc, argv)) return 1;
+  if (SPCheckOptionsFiles(argc, argv)) return 1; /* before PetscInitialize reads them */
   PetscCall(PetscInitialize(&argc, &argv, NULL, help));
   PetscCall(PetscPushErrorHandler(ErrorHandler, NULL));
   ierr = Run(&converged, &interrupted);

@@ -11,6 +11,10 @@ test_bad_input_catalogue() {
   printf '$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Nodes\n' > "$CASE_DIR/truncated.msh"
   mkdir -p "$CASE_DIR/taken.h5"
   touch "$CASE_DIR/afile"
+  printf -- '-load_steps 1 # an options file naming a missing one\n-options_file /nonexistent/inner.opts\n' > "$CASE_DIR/outer.opts"
+  printf -- '-options_file %s/outer.opts\n' "$CASE_DIR" > "$CASE_DIR/middle.opts"
+  printf -- '-options_file %s/self.opts\n' "$CASE_DIR" > "$CASE_DIR/self.opts"
+  printf -- '-load_steps 1\n-options_file\n' > "$CASE_DIR/dangling.opts"
   sed -e "s|@DIR@|$CASE_DIR|g" <<'CASES' | bad_input_cases
 contact label on cells|input/hertz2d.opts|-contact_label "Cell Sets" -contact_values 1
 contact value without points|input/hertz2d.opts|-contact_values 99
@@ -45,6 +49,10 @@ mesh file not a mesh|input/hertz2d.opts|-mesh_file input/hertz2d.opts
 gmsh format 3 (unsupported) named|input/hertz2d.opts|-mesh_file @DIR@/v3.msh
 truncated gmsh file|input/hertz2d.opts|-mesh_file @DIR@/truncated.msh
 options file missing|input/hertz2d.opts|-options_file /nonexistent.opts
+options file naming a missing options file|input/hertz2d.opts|-options_file @DIR@/outer.opts
+the same two files deep|input/hertz2d.opts|-options_file @DIR@/middle.opts
+options file naming itself (a cycle)|input/hertz2d.opts|-options_file @DIR@/self.opts
+options file ending in -options_file|input/hertz2d.opts|-options_file @DIR@/dangling.opts
 bc type unknown|input/hertz2d.opts|-bc_1_type force_field
 bc component out of range (2D)|input/hertz2d.opts|-bc_0_components 2
 bc component out of range (3D)|input/hertz3d.opts|-bc_0_components 3
@@ -79,18 +87,20 @@ CASES
 # The same checks on 2 ranks for a subset (one line from rank 0, every rank stops)
 test_bad_input_catalogue_np2() {
   local rc=0 i=0 why args code
+  printf -- '-options_file /nonexistent/inner.opts\n' > "$CASE_DIR/outer.opts"
   while IFS='|' read -r why args; do
     i=$((i + 1))
     # shellcheck disable=SC2086
-    spc "$CASE_DIR/o$i.txt" 2 -options_file input/hertz2d.opts -output_dir "$CASE_DIR" $args; code=$?
+    spc "$CASE_DIR/o$i.txt" 2 -options_file input/hertz2d.opts -output_dir "$CASE_DIR" $args </dev/null; code=$? # mpiexec would read the cases
     if [ $code -ne 0 ] && [ "$(grep -c '^spcontact: error:' "$CASE_DIR/o$i.txt")" -eq 1 ] && ! grep -q 'PETSC ERROR' "$CASE_DIR/o$i.txt"; then
       echo "ok   $why (2 ranks): $(grep '^spcontact: error:' "$CASE_DIR/o$i.txt")"
     else echo "FAIL $why (2 ranks, exit $code)"; rc=1; fi
-  done <<'CASES'
+  done <<CASES
 contact value without points|-contact_values 99
 3D point on a 2D mesh|-contact_obstacle_0_point 0,0,0
 penalty 1e300|-contact_penalty 1e300
 options file missing|-options_file /nonexistent.opts
+options file naming a missing options file|-options_file $CASE_DIR/outer.opts
 mesh file not a mesh|-mesh_file input/hertz2d.opts
 CASES
   [ -z "$(ls "$CASE_DIR" | grep -E '\.(h5|xmf|csv)$')" ] || { echo "final-named output written"; rc=1; }
