@@ -130,6 +130,7 @@ typedef struct {
 #define SP_FACET_MAXV 4
 typedef struct {
   PetscInt  pair, nv, gid;               /* gid: global facet number (owner rank's offset + index) */
+  PetscInt  sid;                         /* the facet's serial mesh point number (rank-count free) */
   PetscInt  vid[SP_FACET_MAXV];         /* global vertex numbers (junctions, free ends) */
   PetscInt  cp[SP_FACET_MAXV];          /* global contact-point number of each vertex, -1 if none */
   PetscInt  dof[SP_FACET_MAXV * 3];     /* global displacement dofs; constrained: -(i+1) */
@@ -246,6 +247,7 @@ struct _n_SPContact {
   PetscLogEvent   searchEvent; /* SPContactSearch: gaps, projections and the master exchange */
   PetscBool       setSettled; /* the last Newton iteration of this solve left the active set unchanged */
   PetscInt        nmfAll, mfStart, nmfOwned; /* master facets: global count, this rank's first gid and count */
+  PetscInt       *mfKey; /* per gid: sid * 2 SP_MAX_PAIRS + pair, a name free of the rank count (restart) */
   SPMasterFacet  *own;             /* this rank's owned master facets */
   PetscInt       *mfVert;          /* owned master facets: local plex vertices, SP_FACET_MAXV each */
   PetscInt        nmf, mfCap;      /* received master facets (from every rank, this one included) */
@@ -380,6 +382,17 @@ PETSC_EXTERN PetscErrorCode SPSignalsPending(MPI_Comm, SPSignals *, PetscInt, in
 PETSC_EXTERN PetscErrorCode SPContactPackPoints(SPContact, PetscReal[]);
 PETSC_EXTERN PetscErrorCode SPContactUnpackPoints(SPContact, const PetscReal[], PetscBool *);
 PETSC_EXTERN PetscErrorCode SPRestartWriteStep(SPApp, PetscReal);
+
+/* restart-natural.c: vectors in a partition-independent order (items named by serial point numbers) */
+typedef struct {
+  MPI_Comm  comm;
+  PetscInt  n, N, bs; /* this rank's items, all items, reals per item */
+  PetscInt *idx;      /* each local item's position in the file */
+} SPNatural;
+PETSC_EXTERN PetscErrorCode SPNaturalCreate(MPI_Comm, PetscInt, const PetscInt[], PetscInt, SPNatural *);
+PETSC_EXTERN PetscErrorCode SPNaturalWrite(SPNatural *, PetscViewer, const char[], const PetscReal[]);
+PETSC_EXTERN PetscErrorCode SPNaturalRead(SPNatural *, PetscViewer, const char[], PetscReal[]);
+PETSC_EXTERN PetscErrorCode SPNaturalDestroy(SPNatural *);
 PETSC_EXTERN PetscErrorCode SPRestartLoad(SPApp);
 
 struct _n_SPApp {

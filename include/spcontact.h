@@ -32,6 +32,7 @@ PETSC_EXTERN PetscErrorCode SPLogRegister(SPLog *);
 
 /* mesh.c, partition-metis.c */
 PETSC_EXTERN PetscErrorCode SPMeshCreate(MPI_Comm, DM *);
+PETSC_EXTERN PetscErrorCode SPMeshGetSerialNumbers(DM, const PetscInt **);
 PETSC_EXTERN PetscErrorCode SPMeshCheckLabel(DM, const char[], PetscInt, const PetscInt[], const char[]);
 PETSC_EXTERN PetscErrorCode SPPartitionerSetMetis(DM);
 PETSC_EXTERN PetscErrorCode SPMeshGetLabelFacets(DM, const char[], PetscInt, const PetscInt[], PetscInt *, PetscInt **);
