@@ -3,6 +3,7 @@
 #define SPCONTACT_IMPL_H
 
 #include <spcontact.h>
+#include <hdf5.h>
 #include <kernels/contact-law.h>
 #include <kernels/contact-pair.h>
 
@@ -129,6 +130,7 @@ typedef struct {
 #define SP_FACET_MAXV 4
 typedef struct {
   PetscInt  pair, nv, gid;               /* gid: global facet number (owner rank's offset + index) */
+  PetscInt  sid;                         /* the facet's serial mesh point number (rank-count free) */
   PetscInt  vid[SP_FACET_MAXV];         /* global vertex numbers (junctions, free ends) */
   PetscInt  cp[SP_FACET_MAXV];          /* global contact-point number of each vertex, -1 if none */
   PetscInt  dof[SP_FACET_MAXV * 3];     /* global displacement dofs; constrained: -(i+1) */
@@ -247,6 +249,7 @@ struct _n_SPContact {
   PetscLogEvent   searchEvent; /* SPContactSearch: gaps, projections and the master exchange */
   PetscBool       setSettled; /* the last Newton iteration of this solve left the active set unchanged */
   PetscInt        nmfAll, mfStart, nmfOwned; /* master facets: global count, this rank's first gid and count */
+  PetscInt       *mfKey; /* per gid: sid * 2 SP_MAX_PAIRS + pair, a name free of the rank count (restart) */
   SPMasterFacet  *own;             /* this rank's owned master facets */
   PetscInt       *mfVert;          /* owned master facets: local plex vertices, SP_FACET_MAXV each */
   PetscInt        nmf, mfCap;      /* received master facets (from every rank, this one included) */
@@ -360,7 +363,17 @@ struct _n_SPOutput {
   PetscBool   contactFields;
   PetscBool   frictionFields; /* tangential_traction, slip, status (runs with friction) */
   PetscBool   pointsFile;     /* the contact-points CSV was written (renamed with the others) */
+  struct {                    /* output-guard.c: the write in progress */
+    char      file[PETSC_MAX_PATH_LEN + 32];
+    PetscBool open, collective; /* collective: HDF5 writes (SPOutputWriteBegin) */
+    int       err;            /* errno of its first failure (0: none yet) */
+    H5E_auto2_t func;         /* HDF5's error printing, restored after the write */
+    void     *data;
+  } guard;
 };
+PETSC_EXTERN PetscErrorCode SPOutputWriteBegin(SPOutput, const char[], PetscBool);
+PETSC_EXTERN PetscErrorCode SPOutputWriteEnd(SPOutput, PetscErrorCode);
+PETSC_EXTERN PetscErrorCode SPOutputCheckStream(FILE *, const char[], PetscBool);
 
 /* signals.c: SIGTERM/SIGINT recorded by a handler, acted on at the load-step loop's safe point */
 typedef struct {
@@ -377,6 +390,17 @@ PETSC_EXTERN PetscErrorCode SPSignalsPending(MPI_Comm, SPSignals *, PetscInt, in
 PETSC_EXTERN PetscErrorCode SPContactPackPoints(SPContact, PetscReal[]);
 PETSC_EXTERN PetscErrorCode SPContactUnpackPoints(SPContact, const PetscReal[], PetscBool *);
 PETSC_EXTERN PetscErrorCode SPRestartWriteStep(SPApp, PetscReal);
+
+/* restart-natural.c: vectors in a partition-independent order (items named by serial point numbers) */
+typedef struct {
+  MPI_Comm  comm;
+  PetscInt  n, N, bs; /* this rank's items, all items, reals per item */
+  PetscInt *idx;      /* each local item's position in the file */
+} SPNatural;
+PETSC_EXTERN PetscErrorCode SPNaturalCreate(MPI_Comm, PetscInt, const PetscInt[], PetscInt, SPNatural *);
+PETSC_EXTERN PetscErrorCode SPNaturalWrite(SPNatural *, PetscViewer, const char[], const PetscReal[]);
+PETSC_EXTERN PetscErrorCode SPNaturalRead(SPNatural *, PetscViewer, const char[], PetscReal[]);
+PETSC_EXTERN PetscErrorCode SPNaturalDestroy(SPNatural *);
 PETSC_EXTERN PetscErrorCode SPRestartLoad(SPApp);
 
 struct _n_SPApp {

@@ -32,6 +32,7 @@ PETSC_EXTERN PetscErrorCode SPLogRegister(SPLog *);
 
 /* mesh.c, partition-metis.c */
 PETSC_EXTERN PetscErrorCode SPMeshCreate(MPI_Comm, DM *);
+PETSC_EXTERN PetscErrorCode SPMeshGetSerialNumbers(DM, const PetscInt **);
 PETSC_EXTERN PetscErrorCode SPMeshCheckLabel(DM, const char[], PetscInt, const PetscInt[], const char[]);
 PETSC_EXTERN PetscErrorCode SPPartitionerSetMetis(DM);
 PETSC_EXTERN PetscErrorCode SPMeshGetLabelFacets(DM, const char[], PetscInt, const PetscInt[], PetscInt *, PetscInt **);
@@ -131,6 +132,9 @@ PETSC_EXTERN PetscErrorCode SPOutputClose(SPOutput, SPContact, const char[], Pet
 PETSC_EXTERN PetscErrorCode SPOutputGetPointsFile(SPOutput, char[], size_t);
 PETSC_EXTERN PetscErrorCode SPOutputGetPrefix(SPOutput, const char **);
 PETSC_EXTERN PetscErrorCode SPOutputDestroy(SPOutput *);
+
+/* options-files.c: before PetscInitialize; nonzero (one line printed) if one is unreadable */
+int SPCheckOptionsFiles(int, char **);
 
 /* app.c */
 PETSC_EXTERN PetscErrorCode SPAppCreate(MPI_Comm, SPApp *);

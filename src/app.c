@@ -22,7 +22,7 @@ static PetscErrorCode LoadingSetFromOptions(SPApp a)
   PetscFunctionBeginUser;
   PetscOptionsBegin(a->comm, NULL, "Loading options", "spcontact");
   PetscCall(PetscOptionsInt("-load_steps", "Number of load steps (load factor k/N scales loads, Dirichlet values, obstacle motion)", "SPAppSetUp", a->loadSteps, &a->loadSteps, NULL));
-  PetscCall(PetscOptionsString("-restart", "Resume a load-stepped run from the last converged step stored in this .h5 (or .h5.part) file of an interrupted or failed run (same mesh, options and rank count)", "SPAppSetUp", a->restartFile, a->restartFile, sizeof(a->restartFile), NULL));
+  PetscCall(PetscOptionsString("-restart", "Resume a load-stepped run from the last converged step stored in this .h5 (or .h5.part) file of an interrupted or failed run (same mesh and options, any rank count)", "SPAppSetUp", a->restartFile, a->restartFile, sizeof(a->restartFile), NULL));
   PetscCall(PetscOptionsInt("-debug_interrupt_after_step", "Testing: rank 0 raises SIGTERM after this converged load step (0: never)", "SPAppSetUp", a->signals.debugStep, &a->signals.debugStep, NULL));
   PetscCall(PetscOptionsInt("-load_max_cutbacks", "Budget of the run: total times a failing load increment may be halved before the run stops", "SPAppSetUp", a->maxCutbacks, &a->maxCutbacks, NULL));
   PetscCall(PetscOptionsReal("-load_min_increment", "Floor of the cut-back: the run stops rather than halve the load-factor increment below this", "SPAppSetUp", a->minIncrement, &a->minIncrement, NULL));
@@ -99,7 +99,8 @@ PetscErrorCode SPAppRun(SPApp a, PetscBool *converged, int *interrupted)
   if (on) {
     char file[PETSC_MAX_PATH_LEN + 32];
     PetscCall(SPOutputGetPointsFile(a->output, file, sizeof(file)));
-    PetscCall(SPContactWritePoints(a->contact, a->u, file));
+    PetscCall(SPOutputWriteBegin(a->output, file, PETSC_FALSE));
+    PetscCall(SPOutputWriteEnd(a->output, SPContactWritePoints(a->contact, a->u, file)));
   }
   PetscCall(SPOutputClose(a->output, a->contact, RunStatus(a), a->stepsDone, a->loadReached));
   PetscCall(PetscLogStagePop());

@@ -148,7 +148,7 @@ static PetscErrorCode OwnedFacets(SPContact c, PetscInt *nown, SPMasterFacet **o
   PetscBool      *ghost;
   PetscSection    ls, gs, gsC;
   IS              numIS;
-  const PetscInt *num;
+  const PetscInt *num, *serial;
   SPMasterFacet  *tab = NULL;
   PetscInt       *tv  = NULL;
 
@@ -163,6 +163,7 @@ static PetscErrorCode OwnedFacets(SPContact c, PetscInt *nown, SPMasterFacet **o
   PetscCall(DMGetGlobalSection(c->dmC, &gsC));
   PetscCall(DMPlexCreatePointNumbering(c->dm, &numIS));
   PetscCall(ISGetIndices(numIS, &num));
+  PetscCall(SPMeshGetSerialNumbers(c->dm, &serial));
   for (PetscInt k = 0; k < c->npair; ++k) {
     const SPPair *p = &c->pair[k];
     PetscInt      nf, *facets;
@@ -186,6 +187,7 @@ static PetscErrorCode OwnedFacets(SPContact c, PetscInt *nown, SPMasterFacet **o
       if (ghost[facets[j] - pStart]) continue;
       PetscCall(PetscMemzero(m, sizeof(*m)));
       m->pair = k;
+      m->sid  = serial[facets[j] - pStart];
       PetscCall(SPContactFacetVertices(c->dm, facets[j], &m->nv, vert, m->X));
       PetscCall(OrientFacet(c->dm, facets[j], dim, m->nv, vert, m->X));
       for (PetscInt a = 0; a < m->nv; ++a) {
@@ -288,6 +290,8 @@ static PetscErrorCode SetUpStatic(SPContact c)
   PetscCallMPI(MPI_Allgatherv(c->own, mine * (PetscMPIInt)sizeof(SPMasterFacet), MPI_BYTE, c->mf, cb, db, MPI_BYTE, comm));
   PetscCall(MarkFreeSides(c));
   for (PetscInt j = 0; j < c->nmfOwned; ++j) c->own[j] = c->mf[c->mfStart + j];
+  PetscCall(PetscMalloc1(c->nmfAll, &c->mfKey));
+  for (PetscInt g = 0; g < c->nmfAll; ++g) c->mfKey[g] = c->mf[g].sid * 2 * SP_MAX_PAIRS + c->mf[g].pair;
   for (PetscInt f = 0; f < c->nmf; ++f) {
     const SPMasterFacet *m = &c->mf[f];
     for (PetscInt a = 0; a < m->nv; ++a) {
@@ -496,6 +500,7 @@ PetscErrorCode SPContactPairsDestroy(SPContact c)
 {
   PetscFunctionBeginUser;
   PetscCall(PetscFree(c->mf));
+  PetscCall(PetscFree(c->mfKey));
   PetscCall(PetscFree(c->own));
   PetscCall(PetscFree(c->mfVert));
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -289,11 +289,12 @@ static void Reals(PetscBool pack, PetscReal v[], PetscInt n, PetscReal b[], Pets
   }
 }
 
-static PetscInt PointState(PetscBool pack, SPContactPoint *p, PetscReal b[])
+/* anchor: the friction anchor's name in the file (facets: SPContact.mfKey; obstacles: -(k + 1)) */
+static PetscInt PointState(PetscBool pack, SPContactPoint *p, PetscReal *anchor, PetscReal b[])
 {
   SPPointState *st = &p->st;
   PetscReal     e[6] = {(PetscReal)st->status, (PetscReal)st->active, (PetscReal)st->inactiveCount, (PetscReal)st->flips, (PetscReal)st->reversed, (PetscReal)st->anchored};
-  PetscReal     anchor = (PetscReal)st->anchor, X[3] = {p->X[0], p->X[1], p->X[2]};
+  PetscReal     X[3] = {p->X[0], p->X[1], p->X[2]};
   PetscInt      k = 0;
 
   Reals(pack, X, 3, b, &k);
@@ -305,7 +306,7 @@ static PetscInt PointState(PetscBool pack, SPContactPoint *p, PetscReal b[])
   Reals(pack, st->tCommit, 3, b, &k);
   Reals(pack, e, 6, b, &k);
   Reals(pack, st->dir, 2, b, &k);
-  Reals(pack, &anchor, 1, b, &k);
+  Reals(pack, anchor, 1, b, &k);
   Reals(pack, st->anchorXi, 2, b, &k);
   Reals(pack, st->us, 3, b, &k);
   Reals(pack, st->um, 3, b, &k);
@@ -320,7 +321,6 @@ static PetscInt PointState(PetscBool pack, SPContactPoint *p, PetscReal b[])
     st->flips         = (PetscInt)e[3];
     st->reversed      = e[4] != 0.0 ? PETSC_TRUE : PETSC_FALSE;
     st->anchored      = e[5] != 0.0 ? PETSC_TRUE : PETSC_FALSE;
-    st->anchor        = (PetscInt)anchor;
   }
   return k;
 }
@@ -329,22 +329,38 @@ PetscErrorCode SPContactPackPoints(SPContact c, PetscReal buf[])
 {
   PetscFunctionBeginUser;
   for (PetscInt i = 0; i < c->n; ++i) {
-    PetscCheck(PointState(PETSC_TRUE, &c->pt[i], &buf[i * SP_POINT_NPACK]) == SP_POINT_NPACK, PETSC_COMM_SELF, PETSC_ERR_PLIB, "SP_POINT_NPACK does not match the packed fields");
+    const PetscInt g      = c->pt[i].st.anchor;
+    PetscReal      anchor = (PetscReal)(g >= 0 && g < c->nmfAll && c->mfKey ? c->mfKey[g] : g);
+    PetscCheck(PointState(PETSC_TRUE, &c->pt[i], &anchor, &buf[i * SP_POINT_NPACK]) == SP_POINT_NPACK, PETSC_COMM_SELF, PETSC_ERR_PLIB, "SP_POINT_NPACK does not match the packed fields");
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* *same: every point's reference position is the packed one (same mesh and partition) */
+/* The master facet gid of a file's anchor name (-1: none has it) */
+static PetscInt AnchorGid(SPContact c, PetscInt key)
+{
+  for (PetscInt g = 0; c->mfKey && g < c->nmfAll; ++g)
+    if (c->mfKey[g] == key) return g;
+  return -1;
+}
+
+/* *same: every point's reference position is the packed one, and every anchor facet exists (same
+   mesh; the points come in this run's order, whatever the partition that wrote them) */
 PetscErrorCode SPContactUnpackPoints(SPContact c, const PetscReal buf[], PetscBool *same)
 {
   PetscFunctionBeginUser;
   *same = PETSC_TRUE;
   for (PetscInt i = 0; i < c->n; ++i) {
-    PetscReal b[SP_POINT_NPACK], X[3] = {c->pt[i].X[0], c->pt[i].X[1], c->pt[i].X[2]};
+    PetscReal b[SP_POINT_NPACK], X[3] = {c->pt[i].X[0], c->pt[i].X[1], c->pt[i].X[2]}, anchor;
     for (PetscInt k = 0; k < SP_POINT_NPACK; ++k) b[k] = buf[i * SP_POINT_NPACK + k];
     for (PetscInt d = 0; d < c->dim; ++d)
       if (PetscAbsReal(b[d] - X[d]) > 1e-12 * (1.0 + PetscAbsReal(X[d]))) *same = PETSC_FALSE;
-    (void)PointState(PETSC_FALSE, &c->pt[i], b);
+    (void)PointState(PETSC_FALSE, &c->pt[i], &anchor, b);
+    c->pt[i].st.anchor = anchor < 0.0 ? (PetscInt)anchor : AnchorGid(c, (PetscInt)anchor);
+    if (anchor >= 0.0 && c->pt[i].st.anchor < 0) { /* no such facet here */
+      if (c->pt[i].st.anchored) *same = PETSC_FALSE;
+      c->pt[i].st.anchor = 0;
+    }
     for (PetscInt d = 0; d < 3; ++d) c->pt[i].X[d] = X[d]; /* keep this run's positions */
   }
   PetscFunctionReturn(PETSC_SUCCESS);

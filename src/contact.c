@@ -355,7 +355,7 @@ PetscErrorCode SPContactWritePoints(SPContact c, Vec X, const char file[])
       for (PetscInt k = 9; k < 15; ++k) fprintf(fp, ",%.17g", r[k]);
       fprintf(fp, ",%d\n", (int)r[15]);
     }
-    fclose(fp);
+    PetscCall(SPOutputCheckStream(fp, file, PETSC_TRUE));
     PetscCall(PetscFree2(counts, displs));
     PetscCall(PetscFree(all));
   }

@@ -1,9 +1,15 @@
 static const char help[] = "spcontact: parallel FEM contact mechanics with the shifted penalty method.\n"
                            "Run `spcontact -help` for every option; the README documents them.\n";
 
-#include <errno.h>
 #include <string.h>
+#include <unistd.h>
 #include <spcontact.h>
+
+/* The errors reported in one line: bad input, and a failed write of an output file (output-guard.c) */
+static int OneLine(PetscErrorCode n)
+{
+  return n == PETSC_ERR_USER_INPUT || n == PETSC_ERR_USER || n == PETSC_ERR_ARG_OUTOFRANGE || n == PETSC_ERR_ARG_WRONG || n == PETSC_ERR_FILE_WRITE;
+}
 
 /* User-input errors print one line on rank 0 (no PETSc traceback); everything else keeps
    PETSc's full traceback. Set SPCONTACT_TRACEBACK=1 to see the traceback for input errors. */
@@ -11,36 +17,12 @@ static PetscErrorCode ErrorHandler(MPI_Comm comm, int line, const char *fun, con
 {
   PetscMPIInt rank = 0;
   if (p != PETSC_ERROR_INITIAL) return n;
-  if ((n == PETSC_ERR_USER_INPUT || n == PETSC_ERR_USER || n == PETSC_ERR_ARG_OUTOFRANGE || n == PETSC_ERR_ARG_WRONG) && !getenv("SPCONTACT_TRACEBACK")) {
+  if (OneLine(n) && !getenv("SPCONTACT_TRACEBACK")) {
     MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
     if (rank == 0) fprintf(stderr, "spcontact: error: %s\n", mess ? mess : "(no message)");
     return n;
   }
   return PetscTraceBackErrorHandler(comm, line, fun, file, n, p, mess, ctx);
-}
-
-/* Before PetscInitialize (which reads them with an error wall): every -options_file names a
-   readable file. One line on the first rank; returns nonzero if one does not. */
-static int CheckOptionsFiles(int argc, char **argv)
-{
-  const char *rank = getenv("OMPI_COMM_WORLD_RANK") ? getenv("OMPI_COMM_WORLD_RANK") : getenv("PMI_RANK");
-  const int   loud = !rank || !strcmp(rank, "0");
-
-  for (int i = 1; i < argc; ++i) {
-    FILE *fp;
-    if (strcmp(argv[i], "-options_file") && strcmp(argv[i], "-options_file_yaml")) continue;
-    if (i + 1 >= argc) {
-      if (loud) fprintf(stderr, "spcontact: error: %s needs a file name\n", argv[i]);
-      return 1;
-    }
-    fp = fopen(argv[i + 1], "r");
-    if (!fp) {
-      if (loud) fprintf(stderr, "spcontact: error: %s %s: cannot read the file (%s); check the path\n", argv[i], argv[i + 1], strerror(errno));
-      return 1;
-    }
-    fclose(fp);
-  }
-  return 0;
 }
 
 /* Options nobody read (a misspelt name, or an option for another kind of run) are reported on
@@ -94,14 +76,18 @@ int main(int argc, char **argv)
   PetscBool      converged = PETSC_FALSE;
   int            interrupted = 0; /* the signal that stopped the run */
 
-  if (CheckOptionsFiles(argc, argv)) return 1;
+  if (SPCheckOptionsFiles(argc, argv)) return 1; /* before PetscInitialize reads them */
   PetscCall(PetscInitialize(&argc, &argv, NULL, help));
   PetscCall(PetscPushErrorHandler(ErrorHandler, NULL));
   ierr = Run(&converged, &interrupted);
-  if (ierr == PETSC_ERR_USER_INPUT || ierr == PETSC_ERR_USER || ierr == PETSC_ERR_ARG_OUTOFRANGE || ierr == PETSC_ERR_ARG_WRONG) {
+  if (ierr == PETSC_ERR_FILE_WRITE) { /* an output write failed: its h5 cannot be closed, and */
+    fflush(NULL);                     /* HDF5 would crash closing it in MPI_Finalize (output-guard.c) */
+    _exit(1);
+  }
+  if (OneLine(ierr)) {
     (void)PetscPopErrorHandler();
     (void)PetscFinalize();
-    return 1; /* bad input: one line on stderr */
+    return 1; /* bad input or a failed write: one line on stderr */
   }
   if (ierr) PETSCABORT(PETSC_COMM_WORLD, ierr);
   PetscCall(ReportUnusedOptions());

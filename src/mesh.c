@@ -56,9 +56,12 @@ static PetscErrorCode ReadMesh(MPI_Comm comm, const char file[], DM *dm)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+static PetscErrorCode KeepSerialNumbers(DM, PetscSF);
+
 static PetscErrorCode Distribute(DM *dm, const char partitioner[])
 {
   PetscPartitioner part;
+  PetscSF          sfMig = NULL;
   DM               dist = NULL;
   PetscMPIInt      size;
 
@@ -75,11 +78,60 @@ static PetscErrorCode Distribute(DM *dm, const char partitioner[])
     PetscCall(PetscPopErrorHandler());
     PetscCheck(!ierr, PetscObjectComm((PetscObject)*dm), PETSC_ERR_USER_INPUT, "-mesh_partitioner %s: unknown or unavailable partitioner (use metis, ptscotch or simple)", partitioner);
   }
-  PetscCall(DMPlexDistribute(*dm, 0, NULL, &dist));
+  PetscCall(DMPlexDistribute(*dm, 0, &sfMig, &dist));
   if (dist) {
+    PetscCall(KeepSerialNumbers(dist, sfMig));
     PetscCall(DMDestroy(dm));
     *dm = dist;
   }
+  PetscCall(PetscSFDestroy(&sfMig));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+#define SERIAL_KEY "spcontact_serial_points"
+
+/* Every local point's number in the serial mesh (rank 0 held every point before the distribution:
+   the migration SF's roots), composed on the distributed mesh. These numbers do not depend on the
+   rank count: restart files key their data by them. */
+static PetscErrorCode KeepSerialNumbers(DM dist, PetscSF sfMig)
+{
+  PetscInt           pStart, pEnd, nleaves, *sid;
+  const PetscInt    *ilocal;
+  const PetscSFNode *iremote;
+  IS                 is;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMPlexGetChart(dist, &pStart, &pEnd));
+  PetscCall(PetscSFGetGraph(sfMig, NULL, &nleaves, &ilocal, &iremote));
+  PetscCheck(nleaves == pEnd - pStart, PETSC_COMM_SELF, PETSC_ERR_PLIB, "migration SF: %" PetscInt_FMT " leaves for %" PetscInt_FMT " points", nleaves, pEnd - pStart);
+  PetscCall(PetscMalloc1(pEnd - pStart, &sid));
+  for (PetscInt l = 0; l < nleaves; ++l) {
+    PetscCheck(iremote[l].rank == 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "the serial mesh was not on rank 0");
+    sid[(ilocal ? ilocal[l] : l) - pStart] = iremote[l].index;
+  }
+  PetscCall(ISCreateGeneral(PETSC_COMM_SELF, pEnd - pStart, sid, PETSC_OWN_POINTER, &is));
+  PetscCall(PetscObjectCompose((PetscObject)dist, SERIAL_KEY, (PetscObject)is));
+  PetscCall(ISDestroy(&is));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The serial point numbers of the chart's points (identity on a mesh that was not distributed) */
+PetscErrorCode SPMeshGetSerialNumbers(DM dm, const PetscInt **sid)
+{
+  IS is = NULL;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscObjectQuery((PetscObject)dm, SERIAL_KEY, (PetscObject *)&is));
+  if (!is) {
+    PetscInt pStart, pEnd;
+    PetscCall(DMPlexGetChart(dm, &pStart, &pEnd));
+    PetscCall(ISCreateStride(PETSC_COMM_SELF, pEnd - pStart, pStart, 1, &is));
+    PetscCall(ISToGeneral(is));
+    PetscCall(PetscObjectCompose((PetscObject)dm, SERIAL_KEY, (PetscObject)is));
+    PetscCall(ISDestroy(&is));
+    PetscCall(PetscObjectQuery((PetscObject)dm, SERIAL_KEY, (PetscObject *)&is));
+  }
+  PetscCall(ISGetIndices(is, sid)); /* a general IS lends its own array, which lives with the DM */
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -119,7 +119,7 @@ PetscErrorCode SPOutputWriteSurfaceXdmf(SPOutput o, SPContact c, PetscBool compl
       fprintf(fp, "      </Grid>\n");
     }
     fprintf(fp, "    </Grid>\n  </Domain>\n</Xdmf>\n");
-    fclose(fp);
+    PetscCall(SPOutputCheckStream(fp, xmf, PETSC_TRUE));
   }
   *written = nf > 0 ? PETSC_TRUE : PETSC_FALSE;
   PetscCallMPI(MPI_Bcast(written, 1, MPIU_BOOL, 0, PetscObjectComm((PetscObject)o->dm)));

@@ -93,7 +93,7 @@ static PetscErrorCode WriteFile(SPOutput o, const char xmf[], const char h5[], P
     fprintf(fp, "      </Grid>\n");
   }
   fprintf(fp, "    </Grid>\n  </Domain>\n</Xdmf>\n");
-  fclose(fp);
+  PetscCall(SPOutputCheckStream(fp, xmf, PETSC_TRUE));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -116,6 +116,7 @@ PetscErrorCode SPOutputWriteXdmf(SPOutput o, PetscBool complete)
   PetscCall(PetscSNPrintf(h5, sizeof(h5), "%s.h5%s", o->name, complete ? "" : ".part")); /* relative: the .xmf sits beside it */
   for (PetscInt legacy = 0; legacy < 2; ++legacy) {
     PetscCall(PetscSNPrintf(xmf, sizeof(xmf), legacy ? "%s-xdmf2.xmf.part" : "%s.xmf.part", o->prefix));
+    PetscCall(PetscStrncpy(o->guard.file, xmf, sizeof(o->guard.file))); /* the file a failure names */
     if (o->nsteps) PetscCall(WriteFile(o, xmf, h5, dim, nv, nc, corners, legacy ? PETSC_TRUE : PETSC_FALSE));
     else (void)remove(xmf); /* a stale file of an earlier run must not pose as this run's */
   }

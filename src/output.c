@@ -63,11 +63,12 @@ static PetscErrorCode VertexDM(DM dm, PetscInt nc, DM *dmV)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Rank 0 creates the directory if missing and probes it with a file: its errno if it cannot */
 static PetscErrorCode CheckDirectory(SPOutput o)
 {
   MPI_Comm    comm = PetscObjectComm((PetscObject)o->dm);
   PetscMPIInt rank;
-  int         ok = 1;
+  int         err = 0;
 
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
@@ -78,35 +79,55 @@ static PetscErrorCode CheckDirectory(SPOutput o)
     (void)PetscMkdir(o->dir); /* failure shows up as the probe below */
     PetscCall(PetscPopErrorHandler());
     PetscCall(PetscSNPrintf(probe, sizeof(probe), "%s.probe", o->prefix));
-    fp = fopen(probe, "w");
-    if (!fp) ok = 0;
+    errno = 0;
+    fp    = fopen(probe, "w");
+    if (!fp) err = errno ? errno : EACCES;
     else fclose(fp), remove(probe);
   }
-  PetscCallMPI(MPI_Bcast(&ok, 1, MPI_INT, 0, comm));
-  PetscCheck(ok, comm, PETSC_ERR_USER_INPUT, "-output_dir %s: cannot create or write the output directory; choose a writable one", o->dir);
+  PetscCallMPI(MPI_Bcast(&err, 1, MPI_INT, 0, comm));
+  PetscCheck(!err, comm, PETSC_ERR_USER_INPUT, "-output_dir %s: cannot create or write the output directory (%s); choose a writable one", o->dir, strerror(err));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The CSV history's header (rank 0 writes it) */
+static PetscErrorCode OpenHistory(SPOutput o, const char file[])
+{
+  MPI_Comm comm = PetscObjectComm((PetscObject)o->dm);
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscFOpen(comm, file, "w", &o->csv));
+  PetscCall(PetscFPrintf(comm, o->csv, "step,augmentation,iteration,residual_norm,active_points,max_penetration,max_shift_change,linear_iterations,stick_points,slip_points,max_stick_creep\n"));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The h5 file with the mesh */
+static PetscErrorCode OpenFields(SPOutput o, const char file[])
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscViewerHDF5Open(PetscObjectComm((PetscObject)o->dm), file, FILE_MODE_WRITE, &o->h5));
+  PetscCall(PetscViewerPushFormat(o->h5, PETSC_VIEWER_HDF5_XDMF));
+  PetscCall(DMView(o->dm, o->h5));
+  PetscCall(PetscViewerHDF5PushTimestepping(o->h5));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 PetscErrorCode SPOutputOpen(SPOutput o)
 {
-  MPI_Comm comm = PetscObjectComm((PetscObject)o->dm);
   char     file[PETSC_MAX_PATH_LEN + 16];
   PetscInt dim;
 
   PetscFunctionBeginUser;
   PetscCall(CheckDirectory(o));
   PetscCall(PetscSNPrintf(file, sizeof(file), "%s.csv.part", o->prefix));
-  PetscCall(PetscFOpen(comm, file, "w", &o->csv));
-  PetscCall(PetscFPrintf(comm, o->csv, "step,augmentation,iteration,residual_norm,active_points,max_penetration,max_shift_change,linear_iterations,stick_points,slip_points,max_stick_creep\n"));
+  PetscCall(SPOutputWriteBegin(o, file, PETSC_FALSE));
+  PetscCall(SPOutputWriteEnd(o, OpenHistory(o, file)));
   if (!o->enabled) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(DMGetDimension(o->dm, &dim));
   PetscCall(VertexDM(o->dm, dim, &o->dmV));
   PetscCall(VertexDM(o->dm, 1, &o->dmS));
   PetscCall(PetscSNPrintf(file, sizeof(file), "%s.h5.part", o->prefix));
-  PetscCall(PetscViewerHDF5Open(comm, file, FILE_MODE_WRITE, &o->h5));
-  PetscCall(PetscViewerPushFormat(o->h5, PETSC_VIEWER_HDF5_XDMF));
-  PetscCall(DMView(o->dm, o->h5));
-  PetscCall(PetscViewerHDF5PushTimestepping(o->h5));
+  PetscCall(SPOutputWriteBegin(o, file, PETSC_TRUE));
+  PetscCall(SPOutputWriteEnd(o, OpenFields(o, file)));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -149,15 +170,13 @@ static PetscErrorCode VertexDisplacement(SPOutput o, SPProblem problem, Vec u, V
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode SPOutputWriteStep(SPOutput o, SPProblem problem, Vec u, SPContact contact)
+static PetscErrorCode WriteFields(SPOutput o, SPProblem problem, Vec u, SPContact contact)
 {
   Vec       uV, f[4];
   PetscBool on;
   PetscReal load;
 
   PetscFunctionBeginUser;
-  if (!o->enabled) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCheck(o->nsteps < (PetscInt)(sizeof(o->times) / sizeof(o->times[0])), PETSC_COMM_SELF, PETSC_ERR_SUP, "too many output steps");
   PetscCall(SPProblemGetLoadFactor(problem, &load));
   PetscCall(PetscViewerHDF5SetTimestep(o->h5, o->nsteps));
   o->times[o->nsteps++] = load;
@@ -190,6 +209,36 @@ PetscErrorCode SPOutputWriteStep(SPOutput o, SPProblem problem, Vec u, SPContact
   PetscCall(DMRestoreGlobalVector(o->dmV, &f[0]));
   PetscCall(DMRestoreGlobalVector(o->dmV, &f[1]));
   PetscCall(DMRestoreGlobalVector(o->dmS, &f[2]));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* rank 0: the step's lines of the CSV history reached the file */
+static PetscErrorCode FlushHistory(SPOutput o, PetscBool close)
+{
+  PetscMPIInt rank;
+  FILE       *fp = o->csv;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(PetscObjectComm((PetscObject)o->dm), &rank));
+  if (close) o->csv = NULL; /* closed below, whatever happens */
+  if (!rank && fp) PetscCall(SPOutputCheckStream(fp, o->guard.file, close));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* A converged step: its fields in the h5 (with -output_fields), its history lines flushed */
+PetscErrorCode SPOutputWriteStep(SPOutput o, SPProblem problem, Vec u, SPContact contact)
+{
+  char file[PETSC_MAX_PATH_LEN + 16];
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscSNPrintf(file, sizeof(file), "%s.csv.part", o->prefix));
+  PetscCall(SPOutputWriteBegin(o, file, PETSC_FALSE));
+  PetscCall(SPOutputWriteEnd(o, FlushHistory(o, PETSC_FALSE)));
+  if (!o->enabled) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCheck(o->nsteps < (PetscInt)(sizeof(o->times) / sizeof(o->times[0])), PETSC_COMM_SELF, PETSC_ERR_SUP, "too many output steps");
+  PetscCall(PetscSNPrintf(file, sizeof(file), "%s.h5.part", o->prefix));
+  PetscCall(SPOutputWriteBegin(o, file, PETSC_TRUE));
+  PetscCall(SPOutputWriteEnd(o, WriteFields(o, problem, u, contact)));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -253,6 +302,17 @@ static PetscErrorCode WriteStatus(SPOutput o, const char status[], PetscInt step
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The h5's status attributes, then the file closed */
+static PetscErrorCode CloseFields(SPOutput o, const char status[], PetscInt step, PetscReal load)
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscViewerHDF5PopTimestepping(o->h5));
+  PetscCall(WriteStatus(o, status, step, load));
+  PetscCall(PetscViewerPopFormat(o->h5));
+  PetscCall(PetscViewerDestroy(&o->h5));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* Finish the files: the status attribute, the XDMF (volume for both readers, contact surface);
    only a complete run renames its *.part files (h5, xmf, csv history, contact-points csv) to their
    final names, all or none. A failed or
@@ -265,20 +325,27 @@ PetscErrorCode SPOutputClose(SPOutput o, SPContact contact, const char status[],
   const char *files[6];
   PetscInt    n = 0, failed = 0;
   int         err = 0;
+  char        file[PETSC_MAX_PATH_LEN + 32];
 
   PetscFunctionBeginUser;
   PetscCall(PetscStrcmp(status, "complete", &complete));
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
-  PetscCall(PetscFClose(comm, o->csv));
-  o->csv = NULL;
+  PetscCall(PetscSNPrintf(file, sizeof(file), "%s.csv.part", o->prefix));
+  PetscCall(SPOutputWriteBegin(o, file, PETSC_FALSE));
+  PetscCall(SPOutputWriteEnd(o, FlushHistory(o, PETSC_TRUE)));
   if (o->h5) {
-    PetscCall(PetscViewerHDF5PopTimestepping(o->h5));
-    PetscCall(WriteStatus(o, status, step, load));
-    PetscCall(PetscViewerPopFormat(o->h5));
-    PetscCall(PetscViewerDestroy(&o->h5));
+    PetscCall(PetscSNPrintf(file, sizeof(file), "%s.h5.part", o->prefix));
+    PetscCall(SPOutputWriteBegin(o, file, PETSC_TRUE));
+    PetscCall(SPOutputWriteEnd(o, CloseFields(o, status, step, load)));
   }
-  if (o->enabled) PetscCall(SPOutputWriteXdmf(o, complete));
-  if (o->enabled) PetscCall(SPOutputWriteSurfaceXdmf(o, contact, complete, &surface));
+  if (o->enabled) {
+    PetscCall(PetscSNPrintf(file, sizeof(file), "%s.xmf.part", o->prefix));
+    PetscCall(SPOutputWriteBegin(o, file, PETSC_FALSE));
+    PetscCall(SPOutputWriteEnd(o, SPOutputWriteXdmf(o, complete)));
+    PetscCall(PetscSNPrintf(file, sizeof(file), "%s-surface.xmf.part", o->prefix));
+    PetscCall(SPOutputWriteBegin(o, file, PETSC_FALSE));
+    PetscCall(SPOutputWriteEnd(o, SPOutputWriteSurfaceXdmf(o, contact, complete, &surface)));
+  }
   if (!complete) PetscFunctionReturn(PETSC_SUCCESS);
   files[n++] = ".csv";
   if (o->pointsFile) files[n++] = "_contact.csv";

@@ -1,12 +1,14 @@
 #define _XOPEN_SOURCE 700 /* realpath */
 /* Restart data: after every converged load step the h5 gets, as timestep k of the group /restart,
-   everything the next step needs: the global displacement vector (displacement), every contact
+   everything the next step needs: the displacement (displacement: the global vector's values of
+   every mesh point that has unconstrained dofs, padded to the largest count), every contact
    point's state (points: SP_POINT_NPACK reals each: shifts or multipliers, committed slip and
-   friction anchors, status, ...) and per rank the loop's and the counters' state (counters: load
-   factor, increment, step, cut-backs, Newton/linear/function counts, contact counters, contact
-   centre). Attributes of /restart name the run (dimension, dofs, contact points, ranks, method,
-   friction, load steps) and the number of steps stored. The vectors are in the partition's order:
-   a restart needs the same mesh, options and rank count (checked, one line each).
+   friction anchors, status, ...), both in an order free of the partition (restart-natural.c:
+   items by serial mesh point number), and per rank of the writing run the loop's and the
+   counters' state (counters: load factor, increment, step, cut-backs, Newton/linear/function
+   counts, contact counters, contact centre). Attributes of /restart name the run (format,
+   dimension, dofs, contact points, ranks, method, friction, load steps) and the number of steps
+   stored. A restart needs the same mesh and options (checked, one line each), on any rank count.
    -restart <file.h5> loads the last stored step before the output files are opened; the restarted
    run's file holds the steps after it (root attributes first_step, restarted_from). */
 #include <spcontact-impl.h>
@@ -50,6 +52,8 @@ static void Counters(PetscBool pack, SPApp a, PetscReal *inc, PetscReal b[])
 }
 
 /* The run's identity, as attributes of /restart: written with the first step, compared on restart */
+#define FORMAT 2 /* 1: vectors in the partition's order (same rank count only); 2: partition-free */
+
 typedef struct {
   PetscInt dim, dofs, points, ranks, friction, loadSteps;
   char     method[64];
@@ -78,39 +82,120 @@ static const char *const IdNames[] = {"dim", "dofs", "contact_points", "ranks", 
 static PetscErrorCode WriteIdentity(PetscViewer h5, const Identity *id)
 {
   const PetscInt v[6] = {id->dim, id->dofs, id->points, id->ranks, id->friction, id->loadSteps};
+  const PetscInt format = FORMAT;
 
   PetscFunctionBeginUser;
+  PetscCall(PetscViewerHDF5WriteAttribute(h5, "/restart", "format", PETSC_INT, &format));
   for (PetscInt k = 0; k < 6; ++k) PetscCall(PetscViewerHDF5WriteAttribute(h5, "/restart", IdNames[k], PETSC_INT, &v[k]));
   PetscCall(PetscViewerHDF5WriteAttribute(h5, "/restart", "method", PETSC_STRING, id->method));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* After converged step a->stepsDone was written (output timestep nsteps - 1): its restart data */
-PetscErrorCode SPRestartWriteStep(SPApp a, PetscReal inc)
+/* The displacement's items: this rank's mesh points with unconstrained dofs (their global offsets
+   and counts), named by serial point number; bs the largest count over the ranks */
+typedef struct {
+  SPNatural nat;
+  PetscInt *off, *cnt;
+} DofItems;
+
+static PetscErrorCode DofItemsCreate(SPApp a, DofItems *it)
 {
-  SPOutput    o = a->output;
-  SPContact   c = a->contact;
-  Vec         v;
+  PetscSection    gs;
+  PetscInt        pStart, pEnd, n = 0, bs = 0, bsAll, rstart, *sid;
+  const PetscInt *serial;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMGetGlobalSection(a->dm, &gs));
+  PetscCall(PetscSectionGetChart(gs, &pStart, &pEnd));
+  PetscCall(VecGetOwnershipRange(a->u, &rstart, NULL));
+  PetscCall(SPMeshGetSerialNumbers(a->dm, &serial));
+  PetscCall(PetscMalloc1(pEnd - pStart + 1, &sid));
+  PetscCall(PetscMalloc2(pEnd - pStart + 1, &it->off, pEnd - pStart + 1, &it->cnt));
+  for (PetscInt p = pStart; p < pEnd; ++p) {
+    PetscInt dof, cdof, off;
+    PetscCall(PetscSectionGetDof(gs, p, &dof));
+    PetscCall(PetscSectionGetConstraintDof(gs, p, &cdof));
+    PetscCall(PetscSectionGetOffset(gs, p, &off));
+    if (dof <= 0 || off < 0 || dof - cdof <= 0) continue; /* no dofs, not owned, or all constrained */
+    sid[n] = serial[p - pStart], it->off[n] = off - rstart, it->cnt[n] = dof - cdof;
+    bs     = PetscMax(bs, dof - cdof);
+    n++;
+  }
+  PetscCallMPI(MPI_Allreduce(&bs, &bsAll, 1, MPIU_INT, MPI_MAX, a->comm));
+  PetscCall(SPNaturalCreate(a->comm, n, sid, bsAll, &it->nat));
+  PetscCall(PetscFree(sid));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode DofItemsDestroy(DofItems *it)
+{
+  PetscFunctionBeginUser;
+  PetscCall(SPNaturalDestroy(&it->nat));
+  PetscCall(PetscFree2(it->off, it->cnt));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The displacement to (pack) or from the items' values (bs per item, padded with zeros) */
+static PetscErrorCode DofValues(PetscBool pack, SPApp a, DofItems *it, PetscReal vals[])
+{
+  PetscScalar *u;
+  const PetscInt bs = it->nat.bs;
+
+  PetscFunctionBeginUser;
+  PetscCall(VecGetArray(a->u, &u));
+  for (PetscInt i = 0; i < it->nat.n; ++i)
+    for (PetscInt j = 0; j < bs; ++j) {
+      if (pack) vals[i * bs + j] = j < it->cnt[i] ? PetscRealPart(u[it->off[i] + j]) : 0.0;
+      else if (j < it->cnt[i]) u[it->off[i] + j] = vals[i * bs + j];
+    }
+  PetscCall(VecRestoreArray(a->u, &u));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The contact points as items: named by their vertices' serial numbers */
+static PetscErrorCode PointItems(SPApp a, SPNatural *nat)
+{
+  SPContact       c = a->contact;
+  PetscInt        n = c->enabled ? c->n : 0, *sid;
+  const PetscInt *serial;
+
+  PetscFunctionBeginUser;
+  PetscCall(SPMeshGetSerialNumbers(a->dm, &serial));
+  PetscCall(PetscMalloc1(n + 1, &sid));
+  for (PetscInt i = 0; i < n; ++i) sid[i] = serial[c->pt[i].vertex];
+  PetscCall(SPNaturalCreate(a->comm, n, sid, SP_POINT_NPACK, nat));
+  PetscCall(PetscFree(sid));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+/* After converged step a->stepsDone was written (output timestep nsteps - 1): its restart data */
+static PetscErrorCode WriteStep(SPApp a, PetscReal inc)
+{
+  SPOutput     o = a->output;
+  SPContact    c = a->contact;
+  Vec          v;
   PetscScalar *x;
-  PetscInt     n = c->enabled ? c->n : 0, steps = o->nsteps;
+  PetscReal   *vals;
+  PetscInt     steps = o->nsteps;
+  DofItems     dofs;
+  SPNatural    pts;
   hid_t        fid;
 
   PetscFunctionBeginUser;
   if (!o->enabled || !o->h5) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(PetscViewerHDF5SetTimestep(o->h5, o->nsteps - 1));
   PetscCall(PetscViewerHDF5PushGroup(o->h5, "/restart"));
-  PetscCall(VecGetLocalSize(a->u, &n));
-  PetscCall(PlainVec(a->comm, n, 1, "displacement", &v));
-  PetscCall(VecCopy(a->u, v));
-  PetscCall(VecView(v, o->h5));
-  PetscCall(VecDestroy(&v));
-  n = c->enabled ? c->n : 0;
-  PetscCall(PlainVec(a->comm, n, SP_POINT_NPACK, "points", &v));
-  PetscCall(VecGetArray(v, &x));
-  if (n) PetscCall(SPContactPackPoints(c, x));
-  PetscCall(VecRestoreArray(v, &x));
-  PetscCall(VecView(v, o->h5));
-  PetscCall(VecDestroy(&v));
+  PetscCall(DofItemsCreate(a, &dofs));
+  PetscCall(PetscMalloc1(dofs.nat.n * dofs.nat.bs + 1, &vals));
+  PetscCall(DofValues(PETSC_TRUE, a, &dofs, vals));
+  PetscCall(SPNaturalWrite(&dofs.nat, o->h5, "displacement", vals));
+  PetscCall(PetscFree(vals));
+  PetscCall(DofItemsDestroy(&dofs));
+  PetscCall(PointItems(a, &pts));
+  PetscCall(PetscMalloc1(pts.n * SP_POINT_NPACK + 1, &vals));
+  if (pts.n) PetscCall(SPContactPackPoints(c, vals));
+  PetscCall(SPNaturalWrite(&pts, o->h5, "points", vals));
+  PetscCall(PetscFree(vals));
+  PetscCall(SPNaturalDestroy(&pts));
   PetscCall(PlainVec(a->comm, 1, NCOUNT, "counters", &v));
   PetscCall(VecGetArray(v, &x));
   Counters(PETSC_TRUE, a, &inc, x);
@@ -128,7 +213,20 @@ PetscErrorCode SPRestartWriteStep(SPApp a, PetscReal inc)
   }
   PetscCall(PetscViewerHDF5WriteAttribute(o->h5, "/restart", "steps", PETSC_INT, &steps));
   PetscCall(PetscViewerHDF5GetFileId(o->h5, &fid));
-  PetscCheck(H5Fflush(fid, H5F_SCOPE_GLOBAL) >= 0, a->comm, PETSC_ERR_FILE_WRITE, "cannot flush the output file (disk full?)");
+  PetscCheck(H5Fflush(fid, H5F_SCOPE_GLOBAL) >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "cannot flush the output file");
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The same as one guarded write: a failure (disk full) ends the run with one line */
+PetscErrorCode SPRestartWriteStep(SPApp a, PetscReal inc)
+{
+  char file[PETSC_MAX_PATH_LEN + 16];
+
+  PetscFunctionBeginUser;
+  if (!a->output->enabled || !a->output->h5) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(PetscSNPrintf(file, sizeof(file), "%s.h5.part", a->output->prefix));
+  PetscCall(SPOutputWriteBegin(a->output, file, PETSC_TRUE));
+  PetscCall(SPOutputWriteEnd(a->output, WriteStep(a, inc)));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -170,8 +268,8 @@ static PetscErrorCode CheckFile(SPApp a)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* The file's run against this one: one line per mismatch */
-static PetscErrorCode CheckIdentity(SPApp a, PetscViewer h5, PetscInt *steps)
+/* The file's run against this one: one line per mismatch. *ranks: the writing run's rank count */
+static PetscErrorCode CheckIdentity(SPApp a, PetscViewer h5, PetscInt *steps, PetscInt *ranks)
 {
   Identity  id;
   PetscBool has;
@@ -181,12 +279,16 @@ static PetscErrorCode CheckIdentity(SPApp a, PetscViewer h5, PetscInt *steps)
   PetscCall(PetscViewerHDF5HasAttribute(h5, "/restart", "steps", &has));
   PetscCheck(has, a->comm, PETSC_ERR_USER_INPUT, "-restart %s: the file has no restart data (no converged load step, or written with -output_fields false)", a->restartFile);
   PetscCall(PetscViewerHDF5ReadAttribute(h5, "/restart", "steps", PETSC_INT, NULL, steps));
+  PetscCall(PetscViewerHDF5HasAttribute(h5, "/restart", "format", &has));
+  PetscCheck(has, a->comm, PETSC_ERR_USER_INPUT, "-restart %s: restart data of an older spcontact (vectors in its partition's order); resume it with that version", a->restartFile);
+  PetscCall(PetscViewerHDF5ReadAttribute(h5, "/restart", "ranks", PETSC_INT, NULL, ranks));
   PetscCall(GetIdentity(a, &id));
   {
-    const PetscInt mine[5] = {id.dim, id.dofs, id.points, id.ranks, id.friction};
-    const char *const what[5] = {"mesh dimension", "number of displacement dofs (mesh or -fe_degree)", "number of contact points (contact surfaces)", "number of MPI ranks (restart on as many ranks as the interrupted run)", "friction (0 off, 1 on)"};
+    const PetscInt mine[5] = {id.dim, id.dofs, id.points, -1, id.friction};
+    const char *const what[5] = {"mesh dimension", "number of displacement dofs (mesh or -fe_degree)", "number of contact points (contact surfaces)", NULL, "friction (0 off, 1 on)"};
     for (PetscInt k = 0; k < 5; ++k) {
       PetscInt theirs;
+      if (!what[k]) continue; /* any rank count */
       PetscCall(PetscViewerHDF5ReadAttribute(h5, "/restart", IdNames[k], PETSC_INT, NULL, &theirs));
       PetscCheck(theirs == mine[k], a->comm, PETSC_ERR_USER_INPUT, "-restart %s: %s is %" PetscInt_FMT " there and %" PetscInt_FMT " here; restart with the interrupted run's mesh and options", a->restartFile, what[k], theirs, mine[k]);
     }
@@ -199,53 +301,78 @@ static PetscErrorCode CheckIdentity(SPApp a, PetscViewer h5, PetscInt *steps)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode LoadVec(PetscViewer h5, Vec v, PetscInt *local)
+/* The counters of the writing run's rank r: its own rank's if the rank count is the same, else
+   rank 0's (the same on every rank but the exchange statistics: rank 0 takes their total) */
+static PetscErrorCode LoadCounters(SPApp a, PetscViewer h5, PetscInt ranks, PetscReal *inc)
 {
+  Vec          v, all;
+  VecScatter   sc;
+  PetscMPIInt  size, rank;
+  PetscScalar *x;
+  PetscReal    b[NCOUNT];
+
   PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_size(a->comm, &size));
+  PetscCallMPI(MPI_Comm_rank(a->comm, &rank));
+  PetscCall(VecCreate(a->comm, &v));
+  PetscCall(VecSetSizes(v, PETSC_DECIDE, ranks * NCOUNT));
+  PetscCall(VecSetBlockSize(v, NCOUNT));
+  PetscCall(VecSetType(v, VECSTANDARD));
+  PetscCall(PetscObjectSetName((PetscObject)v, "counters"));
   PetscCall(VecLoad(v, h5));
-  if (local) PetscCall(VecGetLocalSize(v, local));
+  PetscCall(VecScatterCreateToAll(v, &sc, &all));
+  PetscCall(VecScatterBegin(sc, v, all, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecScatterEnd(sc, v, all, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecGetArray(all, &x));
+  {
+    const PetscInt r = ranks == size ? rank : 0;
+    for (PetscInt k = 0; k < NCOUNT; ++k) b[k] = PetscRealPart(x[r * NCOUNT + k]);
+    if (ranks != size) { /* received facets (11) summed, exchange time (18) the slowest rank's */
+      b[11] = b[18] = 0.0;
+      for (PetscInt q = 0; q < ranks && !rank; ++q) b[11] += PetscRealPart(x[q * NCOUNT + 11]), b[18] = PetscMax(b[18], PetscRealPart(x[q * NCOUNT + 18]));
+    }
+  }
+  PetscCall(VecRestoreArray(all, &x));
+  Counters(PETSC_FALSE, a, inc, b);
+  PetscCall(VecScatterDestroy(&sc));
+  PetscCall(VecDestroy(&all));
+  PetscCall(VecDestroy(&v));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 /* -restart: displacement, contact state, load factor, step and counters of the file's last step */
 PetscErrorCode SPRestartLoad(SPApp a)
 {
-  PetscViewer  h5;
-  Vec          v;
-  PetscInt     steps = 0, n;
-  PetscScalar *x;
-  PetscReal    inc;
-  PetscBool    same, all;
+  PetscViewer h5;
+  PetscInt    steps = 0, ranks = 0;
+  PetscReal   inc, *vals;
+  PetscBool   same = PETSC_TRUE, all;
+  DofItems    dofs;
+  SPNatural   pts;
 
   PetscFunctionBeginUser;
   if (!a->restartFile[0]) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(CheckFile(a));
   PetscCall(PetscViewerHDF5Open(a->comm, a->restartFile, FILE_MODE_READ, &h5));
-  PetscCall(CheckIdentity(a, h5, &steps));
+  PetscCall(CheckIdentity(a, h5, &steps, &ranks));
   PetscCall(PetscViewerHDF5PushTimestepping(h5));
   PetscCall(PetscViewerHDF5SetTimestep(h5, steps - 1));
   PetscCall(PetscViewerHDF5PushGroup(h5, "/restart"));
-  PetscCall(VecGetLocalSize(a->u, &n));
-  PetscCall(PlainVec(a->comm, n, 1, "displacement", &v));
-  PetscCall(LoadVec(h5, v, NULL));
-  PetscCall(VecCopy(v, a->u));
-  PetscCall(VecDestroy(&v));
-  n = a->contact->enabled ? a->contact->n : 0;
-  PetscCall(PlainVec(a->comm, n, SP_POINT_NPACK, "points", &v));
-  PetscCall(LoadVec(h5, v, NULL));
-  PetscCall(VecGetArray(v, &x));
-  same = PETSC_TRUE;
-  if (n) PetscCall(SPContactUnpackPoints(a->contact, x, &same));
-  PetscCall(VecRestoreArray(v, &x));
-  PetscCall(VecDestroy(&v));
+  PetscCall(DofItemsCreate(a, &dofs));
+  PetscCall(PetscMalloc1(dofs.nat.n * dofs.nat.bs + 1, &vals));
+  PetscCall(SPNaturalRead(&dofs.nat, h5, "displacement", vals));
+  PetscCall(DofValues(PETSC_FALSE, a, &dofs, vals));
+  PetscCall(PetscFree(vals));
+  PetscCall(DofItemsDestroy(&dofs));
+  PetscCall(PointItems(a, &pts));
+  PetscCall(PetscMalloc1(pts.n * SP_POINT_NPACK + 1, &vals));
+  PetscCall(SPNaturalRead(&pts, h5, "points", vals));
+  if (pts.n) PetscCall(SPContactUnpackPoints(a->contact, vals, &same));
+  PetscCall(PetscFree(vals));
+  PetscCall(SPNaturalDestroy(&pts));
   PetscCallMPI(MPI_Allreduce(&same, &all, 1, MPIU_BOOL, MPI_LAND, a->comm));
-  PetscCheck(all, a->comm, PETSC_ERR_USER_INPUT, "-restart %s: the contact points lie elsewhere there (another mesh or partition); restart with the interrupted run's mesh, options and rank count", a->restartFile);
-  PetscCall(PlainVec(a->comm, 1, NCOUNT, "counters", &v));
-  PetscCall(LoadVec(h5, v, NULL));
-  PetscCall(VecGetArray(v, &x));
-  Counters(PETSC_FALSE, a, &inc, x);
-  PetscCall(VecRestoreArray(v, &x));
-  PetscCall(VecDestroy(&v));
+  PetscCheck(all, a->comm, PETSC_ERR_USER_INPUT, "-restart %s: the contact points lie elsewhere there, or their friction anchors do not exist here (another mesh); restart with the interrupted run's mesh and options", a->restartFile);
+  PetscCall(LoadCounters(a, h5, ranks, &inc));
   PetscCall(PetscViewerHDF5PopGroup(h5));
   PetscCall(PetscViewerHDF5PopTimestepping(h5));
   PetscCall(PetscViewerDestroy(&h5));

@@ -10,6 +10,11 @@ test_bad_input_catalogue() {
   printf '$MeshFormat\n3.0 0 8\n$EndMeshFormat\n' > "$CASE_DIR/v3.msh"
   printf '$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Nodes\n' > "$CASE_DIR/truncated.msh"
   mkdir -p "$CASE_DIR/taken.h5"
+  touch "$CASE_DIR/afile"
+  printf -- '-load_steps 1 # an options file naming a missing one\n-options_file /nonexistent/inner.opts\n' > "$CASE_DIR/outer.opts"
+  printf -- '-options_file %s/outer.opts\n' "$CASE_DIR" > "$CASE_DIR/middle.opts"
+  printf -- '-options_file %s/self.opts\n' "$CASE_DIR" > "$CASE_DIR/self.opts"
+  printf -- '-load_steps 1\n-options_file\n' > "$CASE_DIR/dangling.opts"
   sed -e "s|@DIR@|$CASE_DIR|g" <<'CASES' | bad_input_cases
 contact label on cells|input/hertz2d.opts|-contact_label "Cell Sets" -contact_values 1
 contact value without points|input/hertz2d.opts|-contact_values 99
@@ -44,6 +49,10 @@ mesh file not a mesh|input/hertz2d.opts|-mesh_file input/hertz2d.opts
 gmsh format 3 (unsupported) named|input/hertz2d.opts|-mesh_file @DIR@/v3.msh
 truncated gmsh file|input/hertz2d.opts|-mesh_file @DIR@/truncated.msh
 options file missing|input/hertz2d.opts|-options_file /nonexistent.opts
+options file naming a missing options file|input/hertz2d.opts|-options_file @DIR@/outer.opts
+the same two files deep|input/hertz2d.opts|-options_file @DIR@/middle.opts
+options file naming itself (a cycle)|input/hertz2d.opts|-options_file @DIR@/self.opts
+options file ending in -options_file|input/hertz2d.opts|-options_file @DIR@/dangling.opts
 bc type unknown|input/hertz2d.opts|-bc_1_type force_field
 bc component out of range (2D)|input/hertz2d.opts|-bc_0_components 2
 bc component out of range (3D)|input/hertz3d.opts|-bc_0_components 3
@@ -58,6 +67,7 @@ FE degree 0|input/hertz2d.opts|-petscspace_degree 0
 output directory is a file|input/hertz2d.opts|-output_dir /etc/hostname
 output directory not writable|input/hertz2d.opts|-output_dir /proc/spcontact
 output name taken by a directory|input/block2d.opts|-output_dir @DIR@ -output_name taken
+output directory under a regular file|input/hertz2d.opts|-output_dir @DIR@/afile/sub
 gap rtol negative|input/hertz2d.opts|-contact_gap_rtol -1
 gap tol zero|input/hertz2d.opts|-contact_gap_tol 0
 cut-back budget negative|input/hertz2d.opts|-load_max_cutbacks -1
@@ -80,18 +90,20 @@ CASES
 # The same checks on 2 ranks for a subset (one line from rank 0, every rank stops)
 test_bad_input_catalogue_np2() {
   local rc=0 i=0 why args code
+  printf -- '-options_file /nonexistent/inner.opts\n' > "$CASE_DIR/outer.opts"
   while IFS='|' read -r why args; do
     i=$((i + 1))
     # shellcheck disable=SC2086
-    spc "$CASE_DIR/o$i.txt" 2 -options_file input/hertz2d.opts -output_dir "$CASE_DIR" $args; code=$?
+    spc "$CASE_DIR/o$i.txt" 2 -options_file input/hertz2d.opts -output_dir "$CASE_DIR" $args </dev/null; code=$? # mpiexec would read the cases
     if [ $code -ne 0 ] && [ "$(grep -c '^spcontact: error:' "$CASE_DIR/o$i.txt")" -eq 1 ] && ! grep -q 'PETSC ERROR' "$CASE_DIR/o$i.txt"; then
       echo "ok   $why (2 ranks): $(grep '^spcontact: error:' "$CASE_DIR/o$i.txt")"
     else echo "FAIL $why (2 ranks, exit $code)"; rc=1; fi
-  done <<'CASES'
+  done <<CASES
 contact value without points|-contact_values 99
 3D point on a 2D mesh|-contact_obstacle_0_point 0,0,0
 penalty 1e300|-contact_penalty 1e300
 options file missing|-options_file /nonexistent.opts
+options file naming a missing options file|-options_file $CASE_DIR/outer.opts
 mesh file not a mesh|-mesh_file input/hertz2d.opts
 CASES
   [ -z "$(ls "$CASE_DIR" | grep -E '\.(h5|xmf|csv)$')" ] || { echo "final-named output written"; rc=1; }
@@ -109,5 +121,60 @@ test_bad_input_unused_option() {
   assert_eq warnings_silenced "$(grep -c 'warning' "$CASE_DIR/quiet.txt")" 0 || rc=1
   spc "$CASE_DIR/clean.txt" 1 -options_file input/hertz2d.opts -output_dir "$CASE_DIR" -output_name clean || rc=1
   assert_eq warnings_clean_run "$(grep -c 'warning' "$CASE_DIR/clean.txt")" 0 || rc=1
+  return $rc
+}
+
+# fsize_wrapper: $CASE_DIR/fsize KB COMMAND... runs COMMAND with a file-size limit of KB kilobytes
+# and SIGXFSZ ignored, so a write past the limit fails with EFBIG as one on a full disk fails with
+# ENOSPC (no root, no tmpfs mount). PMIx keeps its store in memory (its shared-memory file would
+# pass the limit); Open MPI's ROMIO does the MPI-IO (OMPIO prints a line of its own on a failed
+# write). Limits below 16 KB also stop Open MPI's singleton daemon: keep them above.
+fsize_wrapper() {
+  cat > "$CASE_DIR/fsize" <<'EOF'
+ulimit -f "$1" || exit 99
+shift
+trap '' XFSZ
+export PMIX_MCA_gds=hash OMPI_MCA_io=romio321
+exec "$@"
+EOF
+}
+
+# df_case KB FILE WHY|OPTIONS|EXTRA : one bad_input_cases line under a file-size limit of KB; its
+# error line must name FILE (in $CASE_DIR) and the cause
+df_case() {
+  local kb=$1 file=$2 rc=0
+  SPC="bash $CASE_DIR/fsize $kb $SPC" bad_input_cases <<<"$3" || rc=1
+  RERUN="${RERUN:+$RERUN ; }(bash $CASE_DIR/fsize $kb $SPC ...)"
+  assert_eq "the line names $file and the cause" "$(grep -c "^spcontact: error: writing $CASE_DIR/$file failed: File too large (disk full?" "$CASE_DIR/e1.txt")" 1 || rc=1
+  return $rc
+}
+
+# Disk full: a write that fails in the h5 (while the mesh is written, in a later step), the CSV
+# history, the contact-points CSV: one line naming the file and the cause, exit 1, no HDF5-DIAG or
+# PETSc line, no final-named file (the run's files keep their .part names)
+test_bad_input_disk_full() {
+  local rc=0
+  fsize_wrapper
+  df_case 64 m.h5.part "h5 full while the mesh is written|input/hertz2d.opts|-output_name m" || rc=1
+  df_case 1100 s.h5.part "h5 full after some load steps|input/hertz2d.opts|-load_steps 4 -output_name s" || rc=1
+  assert_eq "load steps done before the h5 filled" "$(grep -c '^step ' "$CASE_DIR/o1.txt")" 1 || rc=1
+  df_case 16 c.csv.part "CSV history full|input/block2d.opts|-load_steps 80 -output_fields false -output_name c" || rc=1
+  df_case 16 p_contact.csv.part "contact-points CSV full|input/hertz2d.opts|-dm_refine 1 -output_fields false -output_name p" || rc=1
+  return $rc
+}
+
+# The same on 2 ranks (the limit set in every rank: mpiexec would restore SIGXFSZ): the rank
+# whose HDF5 write failed prints the line and ends the job, the others may be inside HDF5's
+# collective calls; no hang, no PETSc error, no final-named file
+test_bad_input_disk_full_np2() {
+  local rc=0 code
+  fsize_wrapper
+  RERUN="OMPI_MCA_btl=self,tcp timeout 120 $MPIEXEC -n 2 bash $CASE_DIR/fsize 1100 $SPC -options_file input/hertz2d.opts -load_steps 4 -output_dir $CASE_DIR -output_name s"
+  OMPI_MCA_btl=self,tcp timeout 120 $MPIEXEC -n 2 bash "$CASE_DIR/fsize" 1100 $SPC -options_file input/hertz2d.opts -load_steps 4 -output_dir "$CASE_DIR" -output_name s >"$CASE_DIR/o.txt" 2>&1; code=$?
+  grep -v '^ \|^--\|^$' "$CASE_DIR/o.txt" | head -20
+  assert_eq "exit code (1: not a hang 124, not a signal)" "$code" 1 || rc=1
+  assert_eq "error lines" "$(grep -c '^spcontact: error: writing .*s.h5.part failed: File too large' "$CASE_DIR/o.txt")" 1 || rc=1
+  assert_eq "PETSc/HDF5 error lines" "$(grep -c 'PETSC ERROR\|HDF5-DIAG' "$CASE_DIR/o.txt")" 0 || rc=1
+  assert_eq "files" "$(cd "$CASE_DIR" && ls s.* | tr '\n' ' ')" "s.csv.part s.h5.part " || rc=1
   return $rc
 }

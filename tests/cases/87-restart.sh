@@ -15,23 +15,31 @@ with h5py.File(sys.argv[1], "r") as f:
 EOF
 }
 
-# rs_same_field A.h5 B.h5 : max |u_A - u_B| / max |u_A| of the displacement at the last step
+# rs_same_field A.h5 B.h5 : max |u_A - u_B| / max |u_A| of the displacement at the last step, the
+# vertices matched by their coordinates (the files' vertex orders follow their partitions; vertices
+# at the same place, on two bodies, are ordered by their values: equal fields still match)
 rs_same_field() {
   "$PYTHON" - "$1" "$2" <<'EOF'
 import sys
 import h5py
 import numpy as np
-with h5py.File(sys.argv[1], "r") as a, h5py.File(sys.argv[2], "r") as b:
-    ua = a["/vertex_fields/displacement_Field_0"][-1]
-    ub = b["/vertex_fields/displacement_Field_0"][-1]
-    print("%.3e" % (np.abs(ua - ub).max() / np.abs(ua).max()))
+def field(name):
+    with h5py.File(name, "r") as f:
+        X = f["/geometry/vertices"][:]
+        u = f["/vertex_fields/displacement_Field_0"][-1].reshape(len(X), -1)
+    keys = [u[:, k] for k in reversed(range(u.shape[1]))] + [X[:, k] for k in reversed(range(X.shape[1]))]
+    return u[np.lexsort(keys)]
+ua, ub = field(sys.argv[1]), field(sys.argv[2])
+print("%.3e" % (np.abs(ua - ub).max() / np.abs(ua).max()))
 EOF
 }
 
 # rs_case NP OPTIONS... : 10 load steps uninterrupted; the same interrupted after step 5 (rank 0
-# raises SIGTERM: the others stop with it); restarted from its file; figures and field compared
+# raises SIGTERM: the others stop with it); restarted from its file on RS_NP ranks (default NP);
+# figures and field compared
 rs_case() {
   local np=$1 rc=0 code; shift
+  local np2=${RS_NP:-$np}
   local o=("$@" -load_steps 10 -output_dir "$CASE_DIR")
   spc "$CASE_DIR/full.txt" "$np" "${o[@]}" -output_name full || return 1
   spc "$CASE_DIR/half.txt" "$np" "${o[@]}" -output_name half -debug_interrupt_after_step 5; code=$?
@@ -40,7 +48,8 @@ rs_case() {
   assert_eq "interrupted file: status, last step, load factor, restart steps" "$(rs_h5 "$CASE_DIR/half.h5.part")" "interrupted 5 0.5 5" || rc=1
   assert_eq "interrupted run: no final-named file" "$(ls "$CASE_DIR" | grep -c '^half[._a-z]*\(h5\|xmf\|csv\)$')" 0 || rc=1
   assert_eq "complete file: status, last step, load factor" "$(rs_h5 "$CASE_DIR/full.h5" | cut -d' ' -f1-2)" "complete 10" || rc=1
-  spc "$CASE_DIR/rest.txt" "$np" "${o[@]}" -output_name rest -restart "$CASE_DIR/half.h5.part" || return 1
+  spc "$CASE_DIR/rest.txt" "$np2" "${o[@]}" -output_name rest -restart "$CASE_DIR/half.h5.part" || return 1
+  assert_eq "restarted on" "$(sval "$CASE_DIR/rest.txt" ranks) ranks" "$np2 ranks" || rc=1
   assert_eq "restarted run status" "$(sval "$CASE_DIR/rest.txt" status) $(rs_h5 "$CASE_DIR/rest.h5" | cut -d' ' -f1-2)" "complete complete 10" || rc=1
   assert_eq "restarted file: first step, slabs" "$("$PYTHON" -c "import h5py; f = h5py.File('$CASE_DIR/rest.h5', 'r'); print(f.attrs['first_step'], f['/vertex_fields/displacement_Field_0'].shape[0])")" "6 5" || rc=1
   same_summary "$CASE_DIR/full.txt" "$CASE_DIR/rest.txt" 1e-10 load_factor load_steps newton_iterations displacement_max \
@@ -57,6 +66,12 @@ test_restart_b2_shifted_np2()     { rs_case 2 -options_file input/hertz2d.opts -
 test_restart_friction_alm()       { rs_case 1 -options_file input/friction_block2d.opts -contact_method alm; }
 # F1b full slip: slipping points with moving anchors and tangential shifts
 test_restart_friction_slide_shifted_np2() { rs_case 2 -options_file input/friction_slide2d.opts -contact_method shifted; }
+# Another rank count: the restart data is stored by serial mesh point number (restart-natural.c),
+# the friction anchors on master facets by the facets' serial numbers. B2 interrupted on 1 rank,
+# resumed on 2; the frictional two-pass patch F4 (anchors on pair facets) 1 -> 3 and 3 -> 1.
+test_restart_b2_shifted_1to2()    { RS_NP=2 rs_case 1 -options_file input/hertz2d.opts -contact_method shifted; }
+test_restart_friction_patch_1to3() { RS_NP=3 rs_case 1 -options_file input/friction_patch_4_5.opts; }
+test_restart_friction_patch_3to1() { RS_NP=1 rs_case 3 -options_file input/friction_patch_4_5.opts; }
 
 # rs_kill SIG CODE: a real signal from outside (1 rank, no launcher): the run stops after the step
 # it is in, exits with CODE (128 + signal), the file says interrupted and holds that many steps
@@ -113,10 +128,12 @@ test_restart_bad_input() {
   spc "$CASE_DIR/c.txt" 1 -options_file input/hertz2d.opts -load_steps 1 -output_dir "$CASE_DIR" -output_name c || rc=1
   "$PYTHON" -c "import h5py; h5py.File('$CASE_DIR/empty.h5','w')"
   echo "not hdf5" > "$CASE_DIR/text.h5"
+  "$PYTHON" -c "import h5py; h5py.File('$CASE_DIR/old.h5','w').create_group('restart').attrs['steps'] = 1"
   bad_input_cases <<EOF || rc=1
 restart file missing|input/hertz2d.opts|-load_steps 4 -output_name x -restart $CASE_DIR/none.h5
 restart file not HDF5|input/hertz2d.opts|-load_steps 4 -output_name x -restart $CASE_DIR/text.h5
 restart file without restart data|input/hertz2d.opts|-load_steps 4 -output_name x -restart $CASE_DIR/empty.h5
+restart data of an older version (partition order)|input/hertz2d.opts|-load_steps 4 -output_name x -restart $CASE_DIR/old.h5
 restart of a complete run|input/hertz2d.opts|-load_steps 1 -output_name x -restart $CASE_DIR/c.h5
 restart over its own file|input/hertz2d.opts|-load_steps 4 -output_name h -restart $CASE_DIR/h.h5.part
 restart with another method|input/hertz2d.opts|-load_steps 4 -output_name x -contact_method alm -restart $CASE_DIR/h.h5.part
