@@ -457,8 +457,8 @@ PetscErrorCode SPSolverSetFromOptions(SPSolver s)
   /* inexact Newton by default where it was designed and measured: a linear bulk without friction
      (GMRES on a finite-strain or stick/slip tangent: on demand) */
   s->inexact = s->reuse && !friction ? PETSC_TRUE : PETSC_FALSE;
-  PetscCall(PetscOptionsHasName(NULL, NULL, "-snes_test_jacobian", &testJ));
   PetscOptionsBegin(PetscObjectComm((PetscObject)s->dm), NULL, "Solver options", "spcontact");
+  PetscCall(PetscOptionsName("-snes_test_jacobian", "PETSc's Jacobian test against finite differences (see SNES options); here: no Jacobian reuse, every iterate's Jacobian is assembled and tested", "SPSolverSetFromOptions", &testJ));
   PetscCall(PetscOptionsBool("-solver_linear_reuse", "Linear material: assemble the bulk stiffness K once and use r(u) = r0(load) + K u (false: bulk residual/Jacobian every time)", "SPSolverSetFromOptions", s->reuse, &s->reuse, NULL));
   PetscCall(PetscOptionsBool("-solver_fast_bulk", "Element-level isotropic elasticity for P1/Q1 cells instead of PetscFE where it applies (false: always PetscFE)", "SPSolverSetFromOptions", fast, &fast, NULL));
   PetscCall(PetscOptionsBool("-solver_check_fast", "Verification: compare the fast and the PetscFE bulk residual/Jacobian (and the matrix pattern with DMCreateMatrix's) once, print the relative differences", "SPSolverSetFromOptions", s->checkFast, &s->checkFast, NULL));

@@ -46,7 +46,7 @@ same_summary() {
   local a=$1 b=$2 rtol=$3 rc=0; shift 3
   for k in "$@"; do
     local va vb; va=$(sval "$a" "$k"); vb=$(sval "$b" "$k")
-    assert_close "$k" "$vb" "$va" "$rtol" 1e-14 || rc=1
+    assert_close "$k" "$vb" "$va" "$rtol" "${SAME_ATOL:-1e-14}" || rc=1
   done
   return $rc
 }
