@@ -98,8 +98,13 @@ PETSC_EXTERN void           SPBCSetLoad(PetscInt, const SPBC[], PetscReal, Petsc
    never, at every Newton-iteration boundary, or after every converged inner solve (the outer loop
    is in loading.c). Nothing outside those files names a method. */
 typedef enum { SP_UPDATE_NONE, SP_UPDATE_NEWTON, SP_UPDATE_SOLVE } SPUpdateTiming;
+/* acceleration of the in-Newton update over all active points (contact-accel.c) */
+typedef enum { SP_ACCEL_NONE, SP_ACCEL_ANDERSON } SPShiftAccelType;
+PETSC_EXTERN const char *const SPShiftAccelTypes[];
 typedef struct {
   PetscInt history;    /* (s, g) pairs kept per point for the update rule (>= 1) */
+  SPShiftAccelType accel; /* the shifted method's -contact_shift_accel (none for the others) */
+  PetscInt accelDepth;    /* -contact_shift_accel_depth: differences kept by Anderson */
   PetscInt maxUpdates; /* SP_UPDATE_SOLVE: updates per load step before the step fails */
   const char *maxOption; /* the option that sets maxUpdates (named in the failure message) */
 } SPMethodParams;
@@ -114,6 +119,15 @@ typedef struct {
   PetscBool friction; /* applies the same timing to the tangential shift (Coulomb friction) */
 } SPMethod;
 PETSC_EXTERN const SPMethod *const SPMethodTable[];
+
+/* contact-accel.c: Anderson acceleration of the in-Newton shift update, a vector over the points
+   (distributed: every inner product is a global reduction) */
+typedef struct _n_SPShiftAccel *SPShiftAccel;
+PETSC_EXTERN PetscErrorCode SPShiftAccelCreate(MPI_Comm, PetscInt, PetscInt, SPShiftAccel *);
+PETSC_EXTERN PetscErrorCode SPShiftAccelReset(SPShiftAccel);
+PETSC_EXTERN PetscErrorCode SPShiftAccelUpdate(SPShiftAccel, const PetscBool[], const PetscReal[], const PetscReal[], PetscReal[], PetscBool *);
+PETSC_EXTERN PetscErrorCode SPShiftAccelGetSteps(SPShiftAccel, PetscInt *);
+PETSC_EXTERN PetscErrorCode SPShiftAccelDestroy(SPShiftAccel *);
 PETSC_EXTERN const SPMethod SPMethodPenalty, SPMethodShifted, SPMethodShiftedRegression, SPMethodALM;
 
 /* A contact pair: slave and master surfaces, label values of one label (contact-pairs.c) */
@@ -230,6 +244,9 @@ struct _n_SPContact {
   PetscBool       slipLimited; /* the last Newton step was cut by the tangential step control */
   PetscReal      *hist;      /* update history: params.history (s, g) pairs per point, newest last */
   PetscInt       *nhist;
+  SPShiftAccel    accel;     /* NULL: the plain update (params.accel none) */
+  PetscReal      *accS, *accG, *accNew; /* per point scratch of the accelerated update */
+  PetscBool      *accIn;
   PetscInt       *known;     /* per point: master facets already in the Jacobian pattern */
   /* evaluation cache: the state the geometry was last evaluated at */
   Vec             evalX;       /* copy of the displacement of the last evaluation (NULL: none yet) */

@@ -123,6 +123,10 @@ PetscErrorCode SPContactPointsSetUp(SPContact c, DMLabel slave)
   PetscCall(MarkPoints(c));
   PetscCall(PointGlobalDofs(c));
   PetscCall(PetscCalloc2(c->n * 2 * c->params.history, &c->hist, c->n, &c->nhist));
+  if (c->params.accel != SP_ACCEL_NONE) {
+    PetscCall(SPShiftAccelCreate(PetscObjectComm((PetscObject)c->dm), c->n, c->params.accelDepth, &c->accel));
+    PetscCall(PetscCalloc4(c->n + 1, &c->accS, c->n + 1, &c->accG, c->n + 1, &c->accNew, c->n + 1, &c->accIn));
+  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -132,6 +136,8 @@ PetscErrorCode SPContactPointsDestroy(SPContact c)
   PetscCall(PetscFree4(c->pt, c->saved, c->gapStart, c->slipStart));
   PetscCall(PetscFree(c->known));
   PetscCall(PetscFree2(c->hist, c->nhist));
+  PetscCall(SPShiftAccelDestroy(&c->accel));
+  PetscCall(PetscFree4(c->accS, c->accG, c->accNew, c->accIn));
   PetscCall(VecDestroy(&c->evalX));
   PetscCall(DMDestroy(&c->dmC));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -276,6 +282,7 @@ PetscErrorCode SPContactRestoreState(SPContact c)
     c->pt[i].st.inactiveCount = 0;
     c->nhist[i]               = 0;
   }
+  PetscCall(SPShiftAccelReset(c->accel));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

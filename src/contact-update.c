@@ -65,6 +65,7 @@ PetscErrorCode SPContactBeginSolve(SPContact c, Vec X)
   PetscCall(Bookkeep(c, 0.0, PETSC_FALSE));
   c->setSettled = PETSC_FALSE;
   for (PetscInt i = 0; i < c->n; ++i) c->nhist[i] = 0;
+  PetscCall(SPShiftAccelReset(c->accel));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -82,13 +83,16 @@ static void PushHistory(SPContact c, PetscInt i, PetscReal s, PetscReal g)
   c->nhist[i]++;
 }
 
-/* The in-Newton shift update for point i (method.md section 4, safeguards 1 and 2) */
-static PetscReal UpdatePoint(SPContact c, PetscInt i)
+/* The in-Newton shift update for point i (method.md section 4, safeguards 1 and 2); *rule: the
+   method's rule gave it (the point is active in both iterates), else it is kept or reset */
+static PetscReal UpdatePoint(SPContact c, PetscInt i, PetscBool *rule)
 {
   SPPointState   *st        = &c->pt[i].st;
   const PetscBool activeNow = SPContactPointActive(c, i);
   const PetscInt  m         = c->params.history;
+  *rule                     = PETSC_FALSE;
   if ((st->active || !c->safeguard) && activeNow) { /* active in the solve that produced the iterate, and now */
+    *rule             = PETSC_TRUE;
     st->inactiveCount = 0;
     PushHistory(c, i, st->sN, c->pt[i].geo.gap);
     return PetscMin(0.0, c->method->update(c->nhist[i], &c->hist[2 * m * i], &c->hist[2 * m * i + m]));
@@ -125,6 +129,31 @@ static PetscErrorCode ShiftUpdateApplies(SPContact c, PetscBool *applies, PetscB
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Every point's shift at an applying boundary: the method's rule per point, then, with an
+   accelerator, its step over the points the rule updated (clipped to s <= 0 like the rule) */
+static PetscErrorCode UpdateShifts(SPContact c, PetscReal *maxDs)
+{
+  PetscBool used = PETSC_FALSE;
+  PetscReal *old = c->accS;
+
+  PetscFunctionBeginUser;
+  for (PetscInt i = 0; i < c->n; ++i) {
+    PetscBool       rule;
+    const PetscReal s = c->pt[i].st.sN;
+    c->pt[i].st.sN    = UpdatePoint(c, i, &rule);
+    *maxDs            = PetscMax(*maxDs, PetscAbsReal(c->pt[i].st.sN - s));
+    if (c->accel) old[i] = s, c->accG[i] = c->pt[i].geo.gap, c->accIn[i] = rule, c->accNew[i] = c->pt[i].st.sN;
+  }
+  if (c->accel) PetscCall(SPShiftAccelUpdate(c->accel, c->accIn, old, c->accG, c->accNew, &used));
+  if (!used) PetscFunctionReturn(PETSC_SUCCESS);
+  *maxDs = 0.0;
+  for (PetscInt i = 0; i < c->n; ++i) {
+    if (c->accIn[i]) c->pt[i].st.sN = PetscMin(0.0, c->accNew[i]);
+    *maxDs = PetscMax(*maxDs, PetscAbsReal(c->pt[i].st.sN - old[i]));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* At a Newton-iteration boundary, on the new iterate W: gaps, shift update (in-Newton methods),
    active-set change. *changed says the residual must be recomputed for the new shift. */
 PetscErrorCode SPContactNewtonUpdate(SPContact c, Vec W, PetscBool *changed)
@@ -140,12 +169,8 @@ PetscErrorCode SPContactNewtonUpdate(SPContact c, Vec W, PetscBool *changed)
   if (c->slipLimited) applies = settled = PETSC_FALSE;
   c->slipLimited = PETSC_FALSE;
 
-  if (applies)
-    for (PetscInt i = 0; i < c->n; ++i) {
-      const PetscReal old = c->pt[i].st.sN;
-      c->pt[i].st.sN      = UpdatePoint(c, i);
-      maxDs               = PetscMax(maxDs, PetscAbsReal(c->pt[i].st.sN - old));
-    }
+  if (applies) PetscCall(UpdateShifts(c, &maxDs));
+  else PetscCall(SPShiftAccelReset(c->accel)); /* the active set moved (or the gaps hold): a new map */
   if (settled && c->method->timing == SP_UPDATE_NEWTON) { /* the tangential shift, after the normal one */
     PetscBool fsettled;
     PetscCall(SPFrictionSettled(c, &fsettled));

@@ -97,7 +97,9 @@ static PetscErrorCode MethodSetFromOptions(PetscOptionItems *PetscOptionsObject,
   }
   PetscCall(PetscOptionsEList("-contact_method", help, "SPContactSetFromOptions", names, n, def, &pick, NULL));
   c->method         = SPMethodTable[pick];
-  c->params.history = 1;
+  c->params.history    = 1;
+  c->params.accel      = SP_ACCEL_NONE;
+  c->params.accelDepth = 5;
   for (PetscInt k = 0; k < n; ++k) {
     SPMethodParams other = c->params;
     if (SPMethodTable[k]->setFromOptions) PetscCall(SPMethodTable[k]->setFromOptions(PetscOptionsObject, k == pick ? &c->params : &other));
