@@ -1,0 +1,68 @@
+# Anderson acceleration of the in-Newton shift update (-contact_shift_accel anderson, issue
+# "Performance"): on a settled active set the plain update s <- s + g contracts by about
+# k/(k + eps) per update; Anderson mixing of the last m updates over all active points (one global
+# least-squares problem, reductions only) is GMRES on the shifts for an affine map.
+# Counts measured with a direct solver (scripts/compare_accel.sh), so they measure the update.
+
+# B2 at alpha 10, 100, 1000: converged to the gap tolerance, the same contact force as the plain
+# update (1e-8), Newton iterations at most the plain update's (measured: 8/5/4 against 9/5/4)
+test_accel_b2() {
+  local rc=0 a n0 n1
+  for a in 10 100 1000; do
+    spc "$CASE_DIR/none_$a.txt" 1 -options_file input/hertz2d.opts -contact_alpha $a -pc_type cholesky -output_dir "$CASE_DIR" -output_name none_$a -output_fields false || return 1
+    spc "$CASE_DIR/and_$a.txt" 1 -options_file input/hertz2d.opts -contact_alpha $a -pc_type cholesky -contact_shift_accel anderson -output_dir "$CASE_DIR" -output_name and_$a -output_fields false || return 1
+    n0=$(sval "$CASE_DIR/none_$a.txt" newton_iterations); n1=$(sval "$CASE_DIR/and_$a.txt" newton_iterations)
+    echo "B2 alpha $a: newton plain $n0 anderson $n1, max penetration $(sval "$CASE_DIR/and_$a.txt" contact_max_penetration)"
+    assert_eq converged_$a "$(sval "$CASE_DIR/and_$a.txt" converged)" yes || rc=1
+    assert_le newton_$a "$n1" "$n0" || rc=1
+    assert_le penetration_$a "$(sval "$CASE_DIR/and_$a.txt" contact_max_penetration)" "$(sval "$CASE_DIR/and_$a.txt" contact_gap_tol)" || rc=1
+    assert_close force_$a "$(sval "$CASE_DIR/and_$a.txt" contact_force_y)" "$(sval "$CASE_DIR/none_$a.txt" contact_force_y)" 1e-8 || rc=1
+  done
+  assert_le newton_alpha10 "$(sval "$CASE_DIR/and_10.txt" newton_iterations)" 8 || rc=1
+  return $rc
+}
+
+# The two-pass patch test at alpha 10: the plain update needs 11 cut-backs and 2048 load steps
+# (about 1e5 Newton iterations); Anderson converges in one step (measured: 10 iterations) and
+# passes the patch test (pressure deviation <= 1e-6, force 0.01 to 1e-8)
+test_accel_patch_two_pass_alpha10() {
+  local out=$CASE_DIR/run.txt rc=0 dev
+  spc "$out" 1 -options_file input/patch_4_5.opts -contact_two_pass -contact_alpha 10 -contact_shift_accel anderson -output_dir "$CASE_DIR" -output_name p || return 1
+  dev=$(pairs_pressure_dev "$CASE_DIR/p_contact.csv" 0.01)
+  echo "two-pass patch alpha 10: newton $(sval "$out" newton_iterations) cutbacks $(sval "$out" cutbacks) pressure_deviation $dev"
+  assert_eq converged "$(sval "$out" converged)" yes || rc=1
+  assert_eq cutbacks "$(sval "$out" cutbacks)" 0 || rc=1
+  assert_le newton "$(sval "$out" newton_iterations)" 12 || rc=1
+  assert_le pressure_deviation "$dev" 1e-6 || rc=1
+  assert_close contact_force "$(sval "$out" contact_force_y)" 0.01 1e-8 || rc=1
+  return $rc
+}
+
+# 1, 2 and 3 ranks give the same figures (global reductions only), B4 16^3 at alpha 10 (GAMG)
+test_accel_ranks() {
+  local rc=0 np
+  for np in 1 2 3; do
+    spc "$CASE_DIR/np$np.txt" $np -options_file input/indent3d.opts -dm_plex_box_faces 16,16,16 -contact_alpha 10 -contact_shift_accel anderson -output_dir "$CASE_DIR" -output_name np$np -output_fields false || return 1
+    echo "ranks $np: newton $(sval "$CASE_DIR/np$np.txt" newton_iterations) force_z $(sval "$CASE_DIR/np$np.txt" contact_force_z)"
+  done
+  for np in 2 3; do
+    assert_eq converged_np$np "$(sval "$CASE_DIR/np$np.txt" converged)" yes || rc=1
+    same_summary "$CASE_DIR/np1.txt" "$CASE_DIR/np$np.txt" 1e-8 contact_force_z contact_peak_pressure contact_active_points || rc=1
+    assert_le penetration_np$np "$(sval "$CASE_DIR/np$np.txt" contact_max_penetration)" "$(sval "$CASE_DIR/np$np.txt" contact_gap_tol)" || rc=1
+  done
+  return $rc
+}
+
+# The default is the seed's plain update: no option and -contact_shift_accel none agree exactly;
+# a bad depth is one line
+test_accel_default_unchanged() {
+  local rc=0
+  spc "$CASE_DIR/def.txt" 1 -options_file input/hertz2d.opts -output_dir "$CASE_DIR" -output_name def -output_fields false || return 1
+  spc "$CASE_DIR/none.txt" 1 -options_file input/hertz2d.opts -contact_shift_accel none -output_dir "$CASE_DIR" -output_name none -output_fields false || return 1
+  same_summary "$CASE_DIR/def.txt" "$CASE_DIR/none.txt" 0 newton_iterations linear_iterations contact_force_y contact_max_penetration || rc=1
+  bad_input_cases <<'CASES' || rc=1
+accel depth zero|input/hertz2d.opts|-contact_shift_accel anderson -contact_shift_accel_depth 0
+accel type unknown|input/hertz2d.opts|-contact_shift_accel aitken
+CASES
+  return $rc
+}
