@@ -22,6 +22,7 @@ typedef struct {
   PetscInt  slot;     /* Neumann: constants[] slot; -1 for Dirichlet */
   PetscReal gradient[3]; /* pressure: p(x) = value + gradient . x */
   PetscReal base[7];  /* Neumann: [pressure, t_x, t_y, t_z, dp/dx, dp/dy, dp/dz] at amplitude 1 */
+  PetscBool follower; /* pressure: acts on the deformed face (finite-strain laws; kernels/follower.h) */
 } SPBC;
 
 /* A material law (the table in problem.c). Its parameters come from a material's (E, nu); the

@@ -2,6 +2,7 @@
    pressure per label, all scaled by the load factor. */
 #include <spcontact-impl.h>
 #include <kernels/elastic.h>
+#include <kernels/follower.h>
 
 const char *const SPBCTypes[] = {"dirichlet", "traction", "pressure", "force", "SPBCType", "SP_BC_", NULL};
 
@@ -12,7 +13,7 @@ static PetscErrorCode BCSetFromOptions(MPI_Comm comm, PetscInt i, PetscInt dim, 
   PetscInt  type = 0, nval = 3, nramp, ngrad;
   PetscBool gradSet;
   PetscBool rampSet;
-  PetscBool set, valueSet;
+  PetscBool set, valueSet, followerSet;
 
   PetscFunctionBeginUser;
   PetscCall(PetscSNPrintf(prefix, sizeof(prefix), "bc_%" PetscInt_FMT "_", i));
@@ -20,7 +21,7 @@ static PetscErrorCode BCSetFromOptions(MPI_Comm comm, PetscInt i, PetscInt dim, 
   bc->nvalues = SP_MAX_VALUES;
   bc->ncomps  = dim;
   for (PetscInt d = 0; d < 3; ++d) bc->comps[d] = d, bc->value[d] = 0.0, bc->gradient[d] = 0.0;
-  bc->ramp[0] = 0.0, bc->ramp[1] = 1.0, bc->slot = -1;
+  bc->ramp[0] = 0.0, bc->ramp[1] = 1.0, bc->slot = -1, bc->follower = PETSC_FALSE;
   PetscOptionsBegin(comm, prefix, "Boundary condition", "spcontact");
   PetscCall(PetscOptionsEList("-type", "Boundary condition type: dirichlet, traction, pressure, force (total force spread uniformly over the faces)", "SPBCSetFromOptions", SPBCTypes, 4, SPBCTypes[0], &type, NULL));
   PetscCall(PetscOptionsString("-label", "Mesh label of the boundary", "SPBCSetFromOptions", bc->label, bc->label, sizeof(bc->label), NULL));
@@ -31,6 +32,7 @@ static PetscErrorCode BCSetFromOptions(MPI_Comm comm, PetscInt i, PetscInt dim, 
   PetscCall(PetscOptionsRealArray("-value", "Dirichlet: one displacement per component; traction: vector; pressure: value; force: total force vector (all at load factor 1)", "SPBCSetFromOptions", bc->value, &nval, &valueSet));
   ngrad = 3;
   PetscCall(PetscOptionsRealArray("-gradient", "Pressure: gradient g of a linearly varying pressure p(x) = value + g . x (at load factor 1)", "SPBCSetFromOptions", bc->gradient, &ngrad, &gradSet));
+  PetscCall(PetscOptionsBool("-follower", "Pressure: follow the deformed face (p J F^-T N, with its load stiffness; finite-strain laws only) instead of a dead load on the reference face", "SPBCSetFromOptions", bc->follower, &bc->follower, &followerSet));
   nramp = 2;
   PetscCall(PetscOptionsRealArray("-ramp", "Load curve a,b: the condition is off up to load factor a, full from b, linear between (0,1: proportional to the load factor; e.g. a normal phase, then a tangential one)", "SPBCSetFromOptions", bc->ramp, &nramp, &rampSet));
   PetscOptionsEnd();
@@ -42,6 +44,7 @@ static PetscErrorCode BCSetFromOptions(MPI_Comm comm, PetscInt i, PetscInt dim, 
   }
   for (PetscInt k = 0; k < 3; ++k) PetscCheck(!PetscIsInfOrNanReal(bc->value[k]) && !PetscIsInfOrNanReal(bc->gradient[k]), comm, PETSC_ERR_USER_INPUT, "-%svalue/-%sgradient: every value must be a finite number", prefix, prefix);
   PetscCheck(!gradSet || bc->type == SP_BC_PRESSURE, comm, PETSC_ERR_USER_INPUT, "-%sgradient: only a pressure condition takes a gradient (this one is %s)", prefix, SPBCTypes[type]);
+  PetscCheck(!followerSet || bc->type == SP_BC_PRESSURE, comm, PETSC_ERR_USER_INPUT, "-%sfollower: only a pressure condition follows the deformed face (this one is %s)", prefix, SPBCTypes[type]);
   PetscCheck(!gradSet || ngrad == dim, comm, PETSC_ERR_USER_INPUT, "-%sgradient: give %" PetscInt_FMT " components (one per coordinate), got %" PetscInt_FMT, prefix, dim, ngrad);
   PetscCheck(!rampSet || (nramp == 2 && bc->ramp[0] >= 0.0 && bc->ramp[1] > bc->ramp[0] && bc->ramp[1] <= 1.0), comm, PETSC_ERR_USER_INPUT, "-%sramp: give two load factors 0 <= a < b <= 1", prefix);
   PetscCheck(bc->nvalues > 0, comm, PETSC_ERR_USER_INPUT, "-%svalues: give the label values of boundary condition %" PetscInt_FMT, prefix, i);
@@ -140,7 +143,13 @@ PetscErrorCode SPBCAddToDS(DM dm, PetscInt nbc, SPBC bc[], PetscScalar constants
       PetscCall(DMGetLabel(dm, bc[i].label, &label));
       PetscCall(DMAddBoundary(dm, DM_BC_NATURAL, opt + 1, label, bc[i].nvalues, bc[i].values, 0, 0, NULL, NULL, NULL, NULL, &bd));
       PetscCall(PetscDSGetBoundary(ds, bd, &wf, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL));
-      for (PetscInt v = 0; v < bc[i].nvalues; ++v) PetscCall(PetscWeakFormSetIndexBdResidual(wf, label, bc[i].values[v], 0, 0, 0, SPNeumannKernels[slot], 0, NULL));
+      for (PetscInt v = 0; v < bc[i].nvalues; ++v) {
+        if (!bc[i].follower) PetscCall(PetscWeakFormSetIndexBdResidual(wf, label, bc[i].values[v], 0, 0, 0, SPNeumannKernels[slot], 0, NULL));
+        else {
+          PetscCall(PetscWeakFormSetIndexBdResidual(wf, label, bc[i].values[v], 0, 0, 0, SPFollowerF0[slot], 0, NULL));
+          PetscCall(PetscWeakFormSetIndexBdJacobian(wf, label, bc[i].values[v], 0, 0, 0, 0, NULL, 0, SPFollowerG1[slot], 0, NULL, 0, NULL));
+        }
+      }
       PetscReal scale = 1.0;
       if (bc[i].type == SP_BC_FORCE) {
         PetscCall(LabelMeasure(dm, &bc[i], &scale));

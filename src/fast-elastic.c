@@ -274,7 +274,33 @@ static PetscErrorCode WorkRestore(Work *w)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* P += K (the bulk stiffness at locX; the linear law ignores locX), then final assembly */
+/* Boundary Jacobians exactly as PETSc's Jacobian adds them (follower pressure: its load
+   stiffness), for every natural boundary of the DS that has one */
+static PetscErrorCode AddBoundaryJacobian(SPFastElastic f, Vec locX, Mat P)
+{
+  PetscDS  ds;
+  PetscInt nbd;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMGetDS(f->dm, &ds));
+  PetscCall(PetscDSGetNumBoundary(ds, &nbd));
+  for (PetscInt b = 0; b < nbd; ++b) {
+    PetscWeakForm           wf;
+    DMBoundaryConditionType type;
+    DMLabel                 label;
+    const PetscInt         *values;
+    PetscInt                nv, field;
+    PetscBool               has;
+    PetscCall(PetscDSGetBoundary(ds, b, &wf, &type, NULL, &label, &nv, &values, &field, NULL, NULL, NULL, NULL, NULL));
+    if (type & DM_BC_ESSENTIAL) continue;
+    PetscCall(PetscWeakFormHasBdJacobian(wf, &has));
+    if (has) PetscCall(DMPlexComputeBdJacobianSingle(f->dm, PETSC_MIN_REAL, wf, label, nv, values, field, locX, NULL, 0.0, P, P));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* P += K (the bulk stiffness at locX; the linear law ignores locX) and the boundary Jacobians,
+   then final assembly */
 PetscErrorCode SPFastElasticAddJacobian(SPFastElastic f, Vec locX, Mat P)
 {
   Work               w;
@@ -294,6 +320,7 @@ PetscErrorCode SPFastElasticAddJacobian(SPFastElastic f, Vec locX, Mat P)
   }
   PetscCall(VecRestoreArrayRead(locX, &x));
   PetscCall(WorkRestore(&w));
+  PetscCall(AddBoundaryJacobian(f, locX, P));
   PetscCall(MatAssemblyBegin(P, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(P, MAT_FINAL_ASSEMBLY));
   PetscFunctionReturn(PETSC_SUCCESS);

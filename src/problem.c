@@ -390,6 +390,8 @@ PetscErrorCode SPProblemSetUp(SPProblem p)
   if (p->regions) PetscCall(SetUpAuxiliary(p, fe, simplex));
   PetscCall(PetscFEDestroy(&fe));
   p->linear       = law->linear;
+  for (PetscInt i = 0; i < p->nbc; ++i)
+    PetscCheck(!p->bc[i].follower || !p->linear, PetscObjectComm((PetscObject)p->dm), PETSC_ERR_USER_INPUT, "-bc_%" PetscInt_FMT "_follower: a follower pressure needs a finite-strain law (-material_model neo_hookean); small-strain elasticity has no deformed face", i);
   p->fastOperator = law->fastOperator;
   constants[SP_C_LOAD] = p->load;
   constants[SP_C_MMS]  = p->mmsAmp;

@@ -30,6 +30,7 @@
 #include <kernels/tensor.h>
 #include <kernels/elastic.h>
 #include <kernels/neohookean.h>
+#include <kernels/follower.h>
 #include <kernels/contact-law.h>
 #include <kernels/contact-pair.h>
 #include <kernels/contact-friction.h>
@@ -241,6 +242,37 @@ static PetscErrorCode CheckLawPointwise(Ctx *c, PetscInt dim, const LawKernels *
   }
   PetscCall(Report(c, &sf));
   PetscCall(Report(c, &sg));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Follower pressure: the load stiffness g1 against central differences of f0 = p cof(F) N at
+   random gradients (|grad u| <= 0.3), unit normals and pressures */
+static PetscErrorCode CheckFollower(Ctx *c, PetscInt dim)
+{
+  const PetscInt n = dim * dim;
+  Stat           s;
+
+  PetscFunctionBeginUser;
+  StatInit(&s, dim, "follower_pressure_g1_vs_f0");
+  for (PetscInt k = 0; k < c->samples; ++k) {
+    PetscReal   N[3], p = Rnd(c, -2.0, 2.0), h;
+    PetscScalar ux[9], up[9], um[9], fp[3], fm[3], g1[27];
+    PetscReal   g[27], gfd[27];
+    RndUnit(c, dim, N);
+    for (PetscInt i = 0; i < n; ++i) ux[i] = Rnd(c, -0.3, 0.3);
+    h = c->step;
+    SPFollowerTangent(dim, p, ux, N, g1);
+    for (PetscInt j = 0; j < n; ++j) { /* j = (trial component) dim + (direction) */
+      for (PetscInt i = 0; i < n; ++i) up[i] = um[i] = ux[i];
+      up[j] += h, um[j] -= h;
+      SPFollowerTraction(dim, p, NULL, up, N, fp);
+      SPFollowerTraction(dim, p, NULL, um, N, fm);
+      for (PetscInt i = 0; i < dim; ++i) gfd[i * n + j] = PetscRealPart(fp[i] - fm[i]) / (2.0 * h);
+    }
+    for (PetscInt i = 0; i < dim * n; ++i) g[i] = PetscRealPart(g1[i]);
+    StatAdd(&s, RelErr(dim * n, g, gfd, PetscAbsReal(p)));
+  }
+  PetscCall(Report(c, &s));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -745,6 +777,7 @@ int main(int argc, char **argv)
   PetscCall(PetscPrintf(PETSC_COMM_WORLD, "test-kernels: seed %" PetscInt_FMT ", %" PetscInt_FMT " samples per check, central FD step %.0e x the state's length, tol %.0e (max relative error)\n", seed, c.samples, (double)c.step, (double)c.tol));
   for (PetscInt dim = 2; dim <= 3; ++dim) {
     for (size_t l = 0; l < sizeof(lawKernels) / sizeof(lawKernels[0]); ++l) PetscCall(CheckLawPointwise(&c, dim, &lawKernels[l]));
+    PetscCall(CheckFollower(&c, dim));
     PetscCall(CheckElasticElement(&c, dim, dim == 2 ? "elastic_stiffness_p1_triangle" : "elastic_stiffness_p1_tet", SimplexGradients));
     PetscCall(CheckElasticElement(&c, dim, dim == 2 ? "elastic_stiffness_q1_quad" : "elastic_stiffness_q1_hex", TensorGradients));
     PetscCall(CheckElasticElement(&c, dim, "elastic_stiffness_random_sets", RandomGradients));
