@@ -1,6 +1,7 @@
 # Memory check (issue 12): PETSc's -malloc_debug (guards around every PETSc allocation, checked on
 # every free) and -malloc_dump (every PETSc allocation still held at PetscFinalize is listed) over
-# a subset of the suite: obstacles 2D/3D, a two-pass pair, friction, finite strain, on 1 and 2
+# a subset of the suite: obstacles 2D/3D, a two-pass pair, friction, finite strain (with a
+# follower pressure and the Anderson shift update), on 1 and 2
 # ranks. Each run must end normally with no leaked block ("[r] N bytes ...") and no corruption
 # report. (valgrind over Open MPI drowns in the library's own reports; PETSc's checks cover the
 # code's allocations, which all go through PetscMalloc.)
@@ -22,5 +23,6 @@ test_memcheck_subset() {
   mem_case b6_one_pass 1 -options_file input/hertz2d_twobody.opts || rc=1
   mem_case friction_f1a 2 -options_file input/friction_block2d.opts || rc=1
   mem_case neo_hookean 1 -options_file input/block3d.opts -material_model neo_hookean -bc_2_value 0.3 || rc=1
+  mem_case follower_anderson 2 -options_file input/block2d.opts -material_model neo_hookean -bc_1_value 0.3 -bc_1_follower -contact_shift_accel anderson || rc=1
   return $rc
 }
