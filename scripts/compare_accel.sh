@@ -2,7 +2,8 @@
 # The shifted method's update rules side by side: penalty (reference), shifted with the plain update
 # (-contact_shift_accel none) and with Anderson acceleration (anderson), at alpha = 10, 100, 1000 on
 # B2, B3, B4 (indent3d at 16^3 cells), B6 and the two-pass patch test (B5).
-# Usage: scripts/compare_accel.sh [NP] [-- PETSc/spcontact options for every run]
+# Usage: [CASES="hertz2d indent3d ..."] scripts/compare_accel.sh [NP] [-- PETSc/spcontact options for every run]
+# (CASES: a subset of the benchmarks, by options-file name; default all five)
 # Prints one table (also build/compare-accel/accel.csv): Newton and linear iterations, max
 # penetration, converged. Direct Cholesky except B4 (GAMG, the default), so that Newton counts
 # measure the contact algorithm, not the preconditioner.
@@ -11,7 +12,7 @@ source scripts/env.sh
 np=1; [ $# -gt 0 ] && [ "$1" != "--" ] && { np=$1; shift; }
 [ "${1:-}" = "--" ] && shift
 out=build/compare-accel; mkdir -p "$out"
-cases=(hertz2d hertz3d indent3d hertz2d_twobody patch_4_5)
+cases=(${CASES:-hertz2d hertz3d indent3d hertz2d_twobody patch_4_5})
 declare -A label=([hertz2d]=B2 [hertz3d]=B3 [indent3d]=B4-16 [hertz2d_twobody]=B6 [patch_4_5]=B5-2pass)
 declare -A extra=([indent3d]="-dm_plex_box_faces 16,16,16" [patch_4_5]="-contact_two_pass")
 echo "case,alpha,variant,newton_iterations,linear_iterations,max_penetration,gap_tol,converged,wall_time" > "$out/accel.csv"

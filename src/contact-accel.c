@@ -191,11 +191,15 @@ PetscErrorCode SPShiftAccelUpdate(SPShiftAccel a, const PetscBool in[], const Pe
   PetscFunctionBeginUser;
   *used = PETSC_FALSE;
   PetscCall(Compare(a, in, g, &changed, &f2));
-  if (changed || (a->have && f2 > a->fPrev)) PetscCall(SPShiftAccelReset(a));
+  if (changed || (a->have && f2 > a->fPrev)) {
+    PetscCall(PetscInfo(NULL, "shift acceleration: history reset (%s)\n", changed ? "new set of points" : "the gap residual grew"));
+    PetscCall(SPShiftAccelReset(a));
+  }
   Push(a, in, s, g, f2);
   if (!a->k) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(Gram(a, in, g));
-  k    = Factor(a);
+  k = Factor(a);
+  if (k < a->k) PetscCall(PetscInfo(NULL, "shift acceleration: %" PetscInt_FMT " of %" PetscInt_FMT " columns kept (ill-conditioned)\n", k, a->k));
   a->k = k; /* the dropped columns are the oldest: the ring keeps the newest k */
   if (!k) PetscFunctionReturn(PETSC_SUCCESS);
   Solve(a, k);

@@ -19,6 +19,9 @@ test_accel_b2() {
     assert_close force_$a "$(sval "$CASE_DIR/and_$a.txt" contact_force_y)" "$(sval "$CASE_DIR/none_$a.txt" contact_force_y)" 1e-8 || rc=1
   done
   assert_le newton_alpha10 "$(sval "$CASE_DIR/and_10.txt" newton_iterations)" 8 || rc=1
+  # the summary names the rule and counts the accelerated updates (alpha 10: 5 of the 6 updates)
+  assert_eq accel_key "$(sval "$CASE_DIR/and_10.txt" contact_shift_accel)" anderson || rc=1
+  assert_eq accel_steps_alpha10 "$(sval "$CASE_DIR/and_10.txt" contact_shift_accel_steps)" 5 || rc=1
   return $rc
 }
 
@@ -60,6 +63,8 @@ test_accel_default_unchanged() {
   spc "$CASE_DIR/def.txt" 1 -options_file input/hertz2d.opts -output_dir "$CASE_DIR" -output_name def -output_fields false || return 1
   spc "$CASE_DIR/none.txt" 1 -options_file input/hertz2d.opts -contact_shift_accel none -output_dir "$CASE_DIR" -output_name none -output_fields false || return 1
   same_summary "$CASE_DIR/def.txt" "$CASE_DIR/none.txt" 0 newton_iterations linear_iterations contact_force_y contact_max_penetration || rc=1
+  assert_eq accel_key "$(sval "$CASE_DIR/def.txt" contact_shift_accel)" none || rc=1
+  assert_eq accel_steps "$(sval "$CASE_DIR/def.txt" contact_shift_accel_steps)" 0 || rc=1
   bad_input_cases <<'CASES' || rc=1
 accel depth zero|input/hertz2d.opts|-contact_shift_accel anderson -contact_shift_accel_depth 0
 accel type unknown|input/hertz2d.opts|-contact_shift_accel aitken
