@@ -338,6 +338,13 @@ struct _n_SPFastElastic {
   const SPMaterialLaw *law;     /* every cell's law: linear (K_e closed form) or its stress/tangent */
 };
 
+/* solver-stiffness.c: the linear stiffness kept inside the Jacobian */
+typedef struct _n_SPStiffness *SPStiffness;
+PETSC_EXTERN PetscErrorCode SPStiffnessSetUp(SPStiffness *, Mat, SPContact);
+PETSC_EXTERN PetscErrorCode SPStiffnessMultAdd(SPStiffness, Mat, Vec, Vec);
+PETSC_EXTERN PetscErrorCode SPStiffnessAssemble(SPStiffness, Mat, SPContact, Vec);
+PETSC_EXTERN PetscErrorCode SPStiffnessDestroy(SPStiffness *);
+
 struct _n_SPSolver {
   DM                  dm;
   SPProblem           problem;
@@ -350,7 +357,7 @@ struct _n_SPSolver {
   PetscInt            step;
   PetscInt            newtonTotal, linearTotal, lastLinear, funcTotal; /* funcTotal: SNES function evaluations */
   PetscBool           reuse;  /* linear material: K assembled once, r(u) = r0(load) + K u */
-  Mat                 K;
+  SPStiffness         stiff;  /* reuse: K kept inside J = K + C (solver-stiffness.c) */
   Vec                 r0;
   SPFastElastic       fast;      /* NULL: the generic PetscFE bulk operator */
   PetscBool           checkFast; /* compare the fast and the generic operator once, print the differences */

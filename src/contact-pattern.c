@@ -5,8 +5,7 @@
    missing on any rank, the pattern is rebuilt: a MATPREALLOCATOR receives the current pattern of P
    (row by row) plus the blocks of every current pair element (active or not, to anticipate), and
    MatPreallocatorPreallocate re-preallocates P in place and fills it with zeros. The pattern only
-   grows. K (the reused linear stiffness, if any) is given the same pattern with its values kept,
-   so the solver's MatCopy(K, P, SAME_NONZERO_PATTERN) stays valid. No new-nonzero malloc ever
+   grows (the solver then refills the bulk stiffness: solver-stiffness.c). No new-nonzero malloc ever
    happens during assembly (MAT_NEW_NONZERO_ALLOCATION_ERR stays on). */
 #include <spcontact-impl.h>
 
@@ -78,20 +77,8 @@ static PetscErrorCode Rebuild(SPContact c, Mat P)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* K gets P's (larger) pattern, values kept */
-static PetscErrorCode Repattern(Mat P, Mat K)
-{
-  Mat Kn;
-
-  PetscFunctionBeginUser;
-  PetscCall(MatDuplicate(P, MAT_DO_NOT_COPY_VALUES, &Kn));
-  PetscCall(MatAXPY(Kn, 1.0, K, SUBSET_NONZERO_PATTERN));
-  PetscCall(MatHeaderReplace(K, &Kn));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-/* Before a Jacobian assembly at X: make P's pattern (and K's, if K) hold the pair couplings */
-PetscErrorCode SPContactSetUpJacobian(SPContact c, Vec X, Mat P, Mat K)
+/* Before a Jacobian assembly at X: make P's pattern hold the pair couplings (P is zero filled if it grew) */
+PetscErrorCode SPContactSetUpJacobian(SPContact c, Vec X, Mat P)
 {
   PetscInt missing = 0, any;
 
@@ -108,6 +95,22 @@ PetscErrorCode SPContactSetUpJacobian(SPContact c, Vec X, Mat P, Mat K)
   PetscCallMPI(MPI_Allreduce(&missing, &any, 1, MPIU_INT, MPI_MAX, PetscObjectComm((PetscObject)P)));
   if (!any) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(Rebuild(c, P));
-  if (K) PetscCall(Repattern(P, K));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Mark (1 in the global vector mark) every row the contact Jacobian can touch: the slave
+   vertices' dofs and the dofs of every master facet (friction anchors are master facets).
+   Constrained dofs are negative and ignored. Collective. */
+PetscErrorCode SPContactMarkRows(SPContact c, Vec mark)
+{
+  PetscFunctionBeginUser;
+  if (c && c->enabled) {
+    PetscScalar one[SP_FACET_MAXV * 3];
+    for (PetscInt k = 0; k < SP_FACET_MAXV * 3; ++k) one[k] = 1.0;
+    for (PetscInt i = 0; i < c->n; ++i) PetscCall(VecSetValues(mark, c->dim, c->pt[i].sdof, one, INSERT_VALUES));
+    for (PetscInt f = 0; f < c->nmf; ++f) PetscCall(VecSetValues(mark, c->mf[f].nv * c->dim, c->mf[f].dof, one, INSERT_VALUES));
+  }
+  PetscCall(VecAssemblyBegin(mark));
+  PetscCall(VecAssemblyEnd(mark));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -117,7 +117,23 @@ static PetscErrorCode CheckFast(SPSolver s)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Linear material: K once; r0 = r(u_free = 0) once per load factor (loads, Dirichlet lifting). */
+/* Linear material: K once, into J (J = K + C, solver-stiffness.c); r0 = r(u_free = 0) once per
+   load factor (loads, Dirichlet lifting). Again after the contact pattern of J grew (J zeroed). */
+static PetscErrorCode BulkStiffness(SPSolver s)
+{
+  Vec zero, locX;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMGetGlobalVector(s->dm, &zero));
+  PetscCall(VecZeroEntries(zero));
+  PetscCall(SPProblemGetLocalState(s->problem, zero, &locX));
+  PetscCall(BulkJacobian(s, locX, s->J));
+  PetscCall(SPProblemRestoreLocalState(s->problem, &locX));
+  PetscCall(DMRestoreGlobalVector(s->dm, &zero));
+  PetscCall(SPStiffnessSetUp(&s->stiff, s->J, s->contact));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscErrorCode LinearParts(SPSolver s)
 {
   PetscReal load;
@@ -125,14 +141,8 @@ static PetscErrorCode LinearParts(SPSolver s)
 
   PetscFunctionBeginUser;
   PetscCall(SPProblemGetLoadFactor(s->problem, &load));
-  if (!s->K) {
-    PetscCall(DMGetGlobalVector(s->dm, &zero));
-    PetscCall(VecZeroEntries(zero));
-    PetscCall(SPProblemGetLocalState(s->problem, zero, &locX));
-    PetscCall(MatDuplicate(s->J, MAT_DO_NOT_COPY_VALUES, &s->K));
-    PetscCall(BulkJacobian(s, locX, s->K));
-    PetscCall(SPProblemRestoreLocalState(s->problem, &locX));
-    PetscCall(DMRestoreGlobalVector(s->dm, &zero));
+  if (!s->stiff) {
+    PetscCall(BulkStiffness(s));
     PetscCall(VecDuplicate(s->r, &s->r0));
     s->r0Load = PETSC_MAX_REAL;
   }
@@ -175,7 +185,7 @@ static PetscErrorCode FormFunction(SNES snes, Vec X, Vec F, void *ctx)
   if (s->reuse) { /* F += r0 + K X */
     PetscCall(LinearParts(s));
     PetscCall(PetscLogEventBegin(s->log->bulkResidual, 0, 0, 0, 0));
-    PetscCall(MatMultAdd(s->K, X, F, F));
+    PetscCall(SPStiffnessMultAdd(s->stiff, s->J, X, F));
     PetscCall(VecAXPY(F, 1.0, s->r0));
     PetscCall(PetscLogEventEnd(s->log->bulkResidual, 0, 0, 0, 0));
   }
@@ -215,18 +225,25 @@ static PetscErrorCode FormJacobian(SNES snes, Vec X, Mat J, Mat P, void *ctx)
   s->jacValid  = PETSC_TRUE;
   PetscCall(SPContactGetActiveVersion(s->contact, &s->jacVersion));
   PetscCall(SPProblemGetLocalState(s->problem, X, &locX));
-  PetscCall(SPContactSetUpJacobian(s->contact, X, P, s->K)); /* contact-pair couplings in the pattern of P (and K) */
-  if (s->reuse) {
-    PetscCall(LinearParts(s));
-    PetscCall(PetscLogEventBegin(s->log->bulkJacobian, 0, 0, 0, 0));
-    PetscCall(MatCopy(s->K, P, SAME_NONZERO_PATTERN));
-    PetscCall(PetscLogEventEnd(s->log->bulkJacobian, 0, 0, 0, 0));
-  } else PetscCall(BulkJacobian(s, locX, P));
   PetscCall(SPContactIsActive(s->contact, &on));
-  if (on) {
+  if (s->reuse) { /* J = K + C: the rows contact touched go back to K, then the new contact part */
+    PetscObjectState nz0, nz1;
+    PetscCall(LinearParts(s));
+    PetscCall(MatGetNonzeroState(P, &nz0));
+    PetscCall(SPContactSetUpJacobian(s->contact, X, P)); /* contact-pair couplings in the pattern of P */
+    PetscCall(MatGetNonzeroState(P, &nz1));
+    if (nz1 != nz0) PetscCall(BulkStiffness(s)); /* P grew and was zeroed */
     PetscCall(PetscLogEventBegin(s->log->contactAssembly, 0, 0, 0, 0));
-    PetscCall(SPContactAddJacobian(s->contact, X, P));
+    PetscCall(SPStiffnessAssemble(s->stiff, P, on ? s->contact : NULL, X));
     PetscCall(PetscLogEventEnd(s->log->contactAssembly, 0, 0, 0, 0));
+  } else {
+    PetscCall(SPContactSetUpJacobian(s->contact, X, P));
+    PetscCall(BulkJacobian(s, locX, P));
+    if (on) {
+      PetscCall(PetscLogEventBegin(s->log->contactAssembly, 0, 0, 0, 0));
+      PetscCall(SPContactAddJacobian(s->contact, X, P));
+      PetscCall(PetscLogEventEnd(s->log->contactAssembly, 0, 0, 0, 0));
+    }
   }
   if (J != P) {
     PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
@@ -592,7 +609,7 @@ PetscErrorCode SPSolverDestroy(SPSolver *solver)
   if (!*solver) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(SNESDestroy(&(*solver)->snes));
   PetscCall(MatDestroy(&(*solver)->J));
-  PetscCall(MatDestroy(&(*solver)->K));
+  PetscCall(SPStiffnessDestroy(&(*solver)->stiff));
   PetscCall(VecDestroy(&(*solver)->r0));
   PetscCall(VecDestroy(&(*solver)->r));
   PetscCall(SPFastElasticDestroy(&(*solver)->fast));
