@@ -438,6 +438,7 @@ struct _n_SPApp {
   SPOutput  output;
   Vec       u;
   PetscInt  loadSteps, maxCutbacks, stepsDone, cutbacks;
+  PetscInt  growAfter, streak; /* the increment doubles after growAfter converged steps in a row (streak) */
   PetscReal minIncrement, maxWallTime; /* cut-back floor (load factor); seconds (0: none) */
   PetscBool converged, quiet; /* quiet: no progress line per load step */
   PetscReal loadReached;

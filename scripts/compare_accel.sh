@@ -14,7 +14,7 @@ np=1; [ $# -gt 0 ] && [ "$1" != "--" ] && { np=$1; shift; }
 out=build/compare-accel; mkdir -p "$out"
 cases=(${CASES:-hertz2d hertz3d indent3d hertz2d_twobody patch_4_5})
 declare -A label=([hertz2d]=B2 [hertz3d]=B3 [indent3d]=B4-16 [hertz2d_twobody]=B6 [patch_4_5]=B5-2pass)
-declare -A extra=([indent3d]="-dm_plex_box_faces 16,16,16" [patch_4_5]="-contact_two_pass")
+declare -A extra=([indent3d]="-dm_plex_box_faces 16,16,16" [patch_4_5]="-contact_two_pass -load_grow_after 0")
 echo "case,alpha,variant,newton_iterations,linear_iterations,max_penetration,gap_tol,converged,wall_time" > "$out/accel.csv"
 for c in "${cases[@]}"; do
   solver="-pc_type cholesky"; [ "$c" = indent3d ] && solver=""

@@ -11,6 +11,7 @@ PetscErrorCode SPAppCreate(MPI_Comm comm, SPApp *app)
   a->loadSteps   = 1;
   a->maxCutbacks = 20;
   a->minIncrement = 1e-4;
+  a->growAfter    = 4;
   PetscCall(PetscTime(&a->t0));
   PetscCall(SPLogRegister(&a->log));
   *app = a;
@@ -25,6 +26,7 @@ static PetscErrorCode LoadingSetFromOptions(SPApp a)
   PetscCall(PetscOptionsString("-restart", "Resume a load-stepped run from the last converged step stored in this .h5 (or .h5.part) file of an interrupted or failed run (same mesh and options, any rank count)", "SPAppSetUp", a->restartFile, a->restartFile, sizeof(a->restartFile), NULL));
   PetscCall(PetscOptionsInt("-debug_interrupt_after_step", "Testing: rank 0 raises SIGTERM after this converged load step (0: never)", "SPAppSetUp", a->signals.debugStep, &a->signals.debugStep, NULL));
   PetscCall(PetscOptionsInt("-load_max_cutbacks", "Budget of the run: total times a failing load increment may be halved before the run stops", "SPAppSetUp", a->maxCutbacks, &a->maxCutbacks, NULL));
+  PetscCall(PetscOptionsInt("-load_grow_after", "After a cut-back, double the increment (up to 1/load_steps) after this many converged steps in a row (0: never)", "SPAppSetUp", a->growAfter, &a->growAfter, NULL));
   PetscCall(PetscOptionsReal("-load_min_increment", "Floor of the cut-back: the run stops rather than halve the load-factor increment below this", "SPAppSetUp", a->minIncrement, &a->minIncrement, NULL));
   PetscCall(PetscOptionsReal("-max_wall_time", "Seconds: no new load step starts after this wall time; the run stops keeping its converged steps (0: no limit)", "SPAppSetUp", a->maxWallTime, &a->maxWallTime, NULL));
   PetscCall(PetscOptionsBool("-quiet", "No progress line per load step on stdout (the summary is still printed)", "SPAppSetUp", a->quiet, &a->quiet, NULL));
@@ -32,6 +34,7 @@ static PetscErrorCode LoadingSetFromOptions(SPApp a)
   PetscCheck(a->minIncrement > 0.0 && a->minIncrement <= 1.0, a->comm, PETSC_ERR_USER_INPUT, "-load_min_increment %g: must be in (0, 1] (a load-factor increment)", (double)a->minIncrement);
   PetscCheck(a->maxWallTime >= 0.0, a->comm, PETSC_ERR_USER_INPUT, "-max_wall_time %g: must be >= 0 seconds (0: no limit)", (double)a->maxWallTime);
   PetscCheck(a->loadSteps >= 1, a->comm, PETSC_ERR_USER_INPUT, "-load_steps %" PetscInt_FMT ": need at least one load step", a->loadSteps);
+  PetscCheck(a->growAfter >= 0, a->comm, PETSC_ERR_USER_INPUT, "-load_grow_after %" PetscInt_FMT ": must be >= 0 (0: the increment never grows back)", a->growAfter);
   PetscCheck(a->maxCutbacks >= 0, a->comm, PETSC_ERR_USER_INPUT, "-load_max_cutbacks %" PetscInt_FMT ": must be >= 0", a->maxCutbacks);
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -2,7 +2,7 @@
    and obstacle motion; shifts carry over. Inside a step, methods that update their shifts after a
    converged solve (augmented Lagrangian) repeat the solve until their update is done or its budget
    is spent. A step that fails either way is halved, within a budget of cut-backs and above a floor
-   on the increment; past either, or past the wall-time limit (checked before every step), the run
+   on the increment, and grows back after a few converged steps; past either, or past the wall-time limit (checked before every step), the run
    stops with a one-line reason; converged steps keep their output. After every written step the
    restart data goes into the h5 and a pending SIGTERM/SIGINT (signals.c) stops the run there, on
    every rank. A restarted run (-restart) starts from the step, load factor and increment
@@ -72,6 +72,22 @@ static PetscErrorCode StopReason(SPApp app, PetscBool ok, PetscReal inc, char wh
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* After a cut-back the increment grows back: doubled (up to 1/N) after -load_grow_after converged
+   steps in a row. A step that only converges at a tiny increment then spends the cut-back budget
+   and stops, instead of crawling through thousands of steps. */
+static PetscErrorCode Regrow(SPApp app, PetscReal *inc)
+{
+  const PetscReal nominal = 1.0 / app->loadSteps;
+
+  PetscFunctionBeginUser;
+  if (app->growAfter <= 0 || *inc >= nominal) PetscFunctionReturn(PETSC_SUCCESS);
+  if (++app->streak < app->growAfter) PetscFunctionReturn(PETSC_SUCCESS);
+  app->streak = 0;
+  *inc        = PetscMin(2.0 * *inc, nominal);
+  PetscCall(PetscPrintf(app->comm, "load increment doubled to %g after %" PetscInt_FMT " converged steps (-load_grow_after)\n", (double)*inc, app->growAfter));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode SPLoadingRun(SPApp app)
 {
   PetscReal done = 0.0, inc = 1.0 / app->loadSteps;
@@ -102,6 +118,7 @@ PetscErrorCode SPLoadingRun(SPApp app)
       PetscCall(SPLogProgress(app, step, load, its0, lits0));
       PetscCall(SPSolverGetCounts(app->solver, &its0, &lits0, NULL));
       app->stepsDone = step, app->loadReached = done;
+      PetscCall(Regrow(app, &inc));
       PetscCall(SPRestartWriteStep(app, inc));
       PetscCall(Interrupted(app, &halt));
       if (halt) break;
@@ -114,6 +131,7 @@ PetscErrorCode SPLoadingRun(SPApp app)
       break;
     }
     app->cutbacks++;
+    app->streak = 0;
     inc *= 0.5;
     PetscCall(PetscPrintf(app->comm, "cutting back: load increment halved to %g\n", (double)inc));
   }

@@ -16,7 +16,7 @@
 #include <hdf5.h>
 #include <stdlib.h>
 
-#define NCOUNT 20 /* reals per rank in /restart/counters */
+#define NCOUNT 21 /* reals per rank in /restart/counters */
 
 /* A plain (DM-less) copy of the layout of n local reals with block size bs: VecView writes it raw */
 static PetscErrorCode PlainVec(MPI_Comm comm, PetscInt n, PetscInt bs, const char name[], Vec *v)
@@ -35,7 +35,7 @@ static void Counters(PetscBool pack, SPApp a, PetscReal *inc, PetscReal b[])
 {
   SPSolver  s = a->solver;
   SPContact c = a->contact;
-  PetscReal v[NCOUNT] = {a->loadReached, *inc, (PetscReal)a->stepsDone, (PetscReal)a->cutbacks, (PetscReal)s->newtonTotal, (PetscReal)s->linearTotal, (PetscReal)s->funcTotal, (PetscReal)c->evaluations, (PetscReal)c->stepLimits, (PetscReal)c->shiftUpdates, (PetscReal)c->exchanges, (PetscReal)c->received, (PetscReal)c->rebuilds, (PetscReal)c->stats.augmentations, (PetscReal)c->centreSet, c->centre[0], c->centre[1], c->centre[2], (PetscReal)c->exchangeTime, s->fscale};
+  PetscReal v[NCOUNT] = {a->loadReached, *inc, (PetscReal)a->stepsDone, (PetscReal)a->cutbacks, (PetscReal)s->newtonTotal, (PetscReal)s->linearTotal, (PetscReal)s->funcTotal, (PetscReal)c->evaluations, (PetscReal)c->stepLimits, (PetscReal)c->shiftUpdates, (PetscReal)c->exchanges, (PetscReal)c->received, (PetscReal)c->rebuilds, (PetscReal)c->stats.augmentations, (PetscReal)c->centreSet, c->centre[0], c->centre[1], c->centre[2], (PetscReal)c->exchangeTime, s->fscale, (PetscReal)a->streak};
 
   if (pack) {
     for (PetscInt k = 0; k < NCOUNT; ++k) b[k] = v[k];
@@ -49,10 +49,11 @@ static void Counters(PetscBool pack, SPApp a, PetscReal *inc, PetscReal b[])
   for (PetscInt d = 0; d < 3; ++d) c->centre[d] = b[15 + d];
   c->exchangeTime = b[18];
   s->fscale       = b[19]; /* the residual tolerance's scale: the largest initial |F| of the run */
+  a->streak       = (PetscInt)b[20]; /* converged steps since the last cut-back or growth */
 }
 
 /* The run's identity, as attributes of /restart: written with the first step, compared on restart */
-#define FORMAT 2 /* 1: vectors in the partition's order (same rank count only); 2: partition-free */
+#define FORMAT 3 /* 1: vectors in the partition's order (same rank count only); 2: partition-free; 3: + the growth streak */
 
 typedef struct {
   PetscInt dim, dofs, points, ranks, friction, loadSteps;
@@ -281,6 +282,11 @@ static PetscErrorCode CheckIdentity(SPApp a, PetscViewer h5, PetscInt *steps, Pe
   PetscCall(PetscViewerHDF5ReadAttribute(h5, "/restart", "steps", PETSC_INT, NULL, steps));
   PetscCall(PetscViewerHDF5HasAttribute(h5, "/restart", "format", &has));
   PetscCheck(has, a->comm, PETSC_ERR_USER_INPUT, "-restart %s: restart data of an older spcontact (vectors in its partition's order); resume it with that version", a->restartFile);
+  {
+    PetscInt format;
+    PetscCall(PetscViewerHDF5ReadAttribute(h5, "/restart", "format", PETSC_INT, NULL, &format));
+    PetscCheck(format == FORMAT, a->comm, PETSC_ERR_USER_INPUT, "-restart %s: restart data format %" PetscInt_FMT " of another spcontact version (this one reads %d); resume it with that version", a->restartFile, format, FORMAT);
+  }
   PetscCall(PetscViewerHDF5ReadAttribute(h5, "/restart", "ranks", PETSC_INT, NULL, ranks));
   PetscCall(GetIdentity(a, &id));
   {

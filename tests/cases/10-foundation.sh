@@ -389,6 +389,7 @@ test_foundation_bad_input() {
   _fnd_case output_dir_unwritable    2 output_dir          $B -output_dir /proc/forbidden
   _fnd_case load_steps_zero          1 load_steps          $B -load_steps 0
   _fnd_case load_max_cutbacks_neg    1 load_max_cutbacks   $B -load_max_cutbacks -1
+  _fnd_case load_grow_after_neg      1 load_grow_after     $B -load_grow_after -1
   _fnd_case bc_component_2_in_2d     2 bc_0_components     $B -bc_0_components 2
   _fnd_case bc_component_negative    1 bc_0_components     $B -bc_0_components -1
   _fnd_case bc_component_3_in_3d     1 bc_0_components     $(fnd_box3 2) -bc_0_type dirichlet -bc_0_values 1 -bc_0_components 3

@@ -25,7 +25,7 @@ test_accel_b2() {
   return $rc
 }
 
-# The two-pass patch test at alpha 10: the plain update needs 11 cut-backs and 2048 load steps
+# The two-pass patch test at alpha 10: the plain update needs 11 cut-backs and 2048 load steps without growth
 # (about 1e5 Newton iterations); Anderson converges in one step (measured: 10 iterations) and
 # passes the patch test (pressure deviation <= 1e-6, force 0.01 to 1e-8)
 test_accel_patch_two_pass_alpha10() {
