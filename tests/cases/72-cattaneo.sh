@@ -17,6 +17,7 @@ cm_run() {
   return $rc
 }
 cmval() { awk -v k="$2" '$1 == k { print $2 }' "$CASE_DIR/$1.check"; }
+cmabs() { awk -v k="$2" '$1 == k { v = $2 + 0; printf "%.10g\n", v < 0 ? -v : v }' "$CASE_DIR/$1.check"; } # |value| (e-notation safe)
 
 # F2: stick half-width within one element of c = b sqrt(1 - Q/(mu P)) = 0.076113 (Q = 0.5 mu P);
 # shifted creep <= 1e-10 h (h = 0.005); contact forces balance the loads (Q, P) to 1e-8; the same
@@ -27,7 +28,7 @@ test_cattaneo2d_f2_shifted() {
   local rc=0
   for np in 1 2 3; do
     cm_run "np$np" "$np" cm -options_file input/cattaneo2d.opts -contact_method shifted || return 1
-    assert_le "half_width_error_elements_np$np" "$(cmval "np$np" half_width_error_elements | tr -d -)" 1 || rc=1
+    assert_le "half_width_error_elements_np$np" "$(cmabs "np$np" half_width_error_elements)" 1 || rc=1
     assert_le "stick_creep_np$np" "$(sval "$CASE_DIR/np$np.txt" contact_max_stick_creep)" 5e-13 || rc=1
     assert_close "force_balance_x_np$np" "$(sval "$CASE_DIR/np$np.txt" contact_force_x)" -0.0015 1e-8 || rc=1
     assert_close "force_balance_y_np$np" "$(sval "$CASE_DIR/np$np.txt" contact_force_y)" 0.01 1e-8 || rc=1
@@ -39,12 +40,37 @@ test_cattaneo2d_f2_shifted() {
   return $rc
 }
 
+# F2 on the rigid-top-edge set-up (input/cattaneo2d_rigid.opts: point-symmetric, the normal phase
+# in 30 steps, then the slide in 10), against CM at the measured P and Q (Q/(mu P) = 0.524): stick
+# zone centred and its half-width within one element of c; 1 and 2 ranks identical to 1e-8. The
+# traction L2 error is 6.1 %, against friction.md's 5 %: asserted only as a regression bound (6.5 %),
+# the 5 % target is missed (README, F2). With the normal phase in one step the centre is off by
+# 3 elements (the anchoring of closing points).
+test_cattaneo2d_f2_rigid_edge() {
+  local rc=0 np
+  for np in 1 2; do
+    local name=rigid_np$np out=$CASE_DIR/rigid_np$np.txt P Q
+    spc "$out" "$np" -options_file input/cattaneo2d_rigid.opts -output_dir "$CASE_DIR" -output_name "$name" || return 1
+    P=$(sval "$out" contact_force_y); Q=$(sval "$out" contact_force_x)
+    $PYTHON scripts/cattaneo_check.py "$CASE_DIR/${name}_contact.csv" cm "$(awk -v q="$Q" -v p="$P" 'BEGIN{printf "%.12g", -q / (0.3 * p)}')" "$P" > "$CASE_DIR/$name.check" || { cat "$CASE_DIR/$name.check"; return 1; }
+    echo "$name: newton $(sval "$out" newton_iterations) P $P Q $Q: $(tr '\n' ' ' < "$CASE_DIR/$name.check")"
+    assert_eq "converged_$name" "$(sval "$out" converged)" yes || rc=1
+    assert_le "centre_error_elements_$name" "$(cmabs "$name" centre_error_elements)" 1 || rc=1
+    assert_le "half_width_error_elements_$name" "$(cmabs "$name" half_width_error_elements)" 1 || rc=1
+    assert_le "traction_l2_regression_$name" "$(cmval "$name" traction_l2_error)" 0.065 || rc=1
+    assert_le "stick_creep_$name" "$(sval "$out" contact_max_stick_creep)" 5e-13 || rc=1
+  done
+  same_summary "$CASE_DIR/rigid_np1.txt" "$CASE_DIR/rigid_np2.txt" 1e-8 contact_force_x contact_force_y contact_tangential_force_x contact_stick_points contact_slip_points || rc=1
+  for k in stick_left stick_right traction_l2_error; do assert_close "${k}_np2" "$(cmval rigid_np2 $k)" "$(cmval rigid_np1 $k)" 1e-8 1e-12 || rc=1; done
+  return $rc
+}
+
 # F5: Q up to Q* = 0.5 mu P, then back to 0: stick half-width within one element of
 # d = b sqrt(1 - Q*/(2 mu P)) = 0.866025 b = 0.0932194; the tangential force back to 0
 test_cattaneo2d_f5_unload_shifted() {
   local rc=0
   cm_run unload 1 unload -options_file input/cattaneo2d_unload.opts -contact_method shifted || return 1
-  assert_le half_width_error_elements "$(cmval unload half_width_error_elements | tr -d -)" 1 || rc=1
+  assert_le half_width_error_elements "$(cmabs unload half_width_error_elements)" 1 || rc=1
   assert_le stick_creep "$(sval "$CASE_DIR/unload.txt" contact_max_stick_creep)" 5e-13 || rc=1
   assert_close tangential_force_zero "$(sval "$CASE_DIR/unload.txt" contact_force_x)" 0 0 1.5e-11 || rc=1 # 1e-8 Q
   assert_close normal_force "$(sval "$CASE_DIR/unload.txt" contact_force_y)" 0.01 1e-8 || rc=1
