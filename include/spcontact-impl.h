@@ -190,6 +190,8 @@ typedef struct {
   PetscBool     reversed;      /* the slip direction reversed at the last bookkeeping */
   /* friction anchor, committed at the last converged step (kept through a cut-back) */
   PetscBool     anchored;
+  PetscBool     fresh;         /* anchored while open: frictionless until a commit anchors it closed (its
+                                  closest point is not the point it will touch) */
   PetscInt      anchor;        /* master facet gid, or -(k + 1) for obstacle k */
   PetscReal     anchorXi[2];   /* local coordinates of the anchor on its facet */
   PetscReal     us[3], um[3];  /* slave displacement and anchor (master) displacement at commit */

@@ -86,7 +86,8 @@ void SPFrictionKinematics(SPContact c, PetscInt i)
   pt->geo.mu     = e == SP_ELEM_OBSTACLE ? c->obMu[pt->geo.obstacle] : (e >= 0 ? c->pair[c->mf[e].pair].mu : 0.0);
   pt->geo.dgT[0] = pt->geo.dgT[1] = 0.0;
   pt->geo.anchorLost = PETSC_FALSE;
-  if (!c->friction || !pt->st.anchored) return;
+  if (pt->st.fresh) pt->geo.mu = 0.0; /* open at its anchoring: no friction until the next commit anchors it closed */
+  if (!c->friction || !pt->st.anchored || pt->st.fresh) return;
   if (!AnchorDisplacement(c, i, um)) {
     pt->geo.anchorLost = PETSC_TRUE;
     return;
@@ -232,6 +233,7 @@ static void AnchorPoint(SPContact c, PetscInt i, const PetscReal tg[], PetscBool
   keep           = keep && st->anchored ? PETSC_TRUE : PETSC_FALSE;
   st->basisStale = PETSC_FALSE;
   st->anchored   = e != SP_ELEM_NONE ? PETSC_TRUE : PETSC_FALSE;
+  st->fresh      = st->anchored && !SPContactPointActive(c, i) ? PETSC_TRUE : PETSC_FALSE;
   st->flips    = 0;
   st->tT[0] = st->tT[1] = st->sT[0] = st->sT[1] = 0.0;
   pt->geo.dgT[0] = pt->geo.dgT[1] = 0.0;

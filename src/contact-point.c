@@ -300,7 +300,7 @@ static void Reals(PetscBool pack, PetscReal v[], PetscInt n, PetscReal b[], Pets
 static PetscInt PointState(PetscBool pack, SPContactPoint *p, PetscReal *anchor, PetscReal b[])
 {
   SPPointState *st = &p->st;
-  PetscReal     e[6] = {(PetscReal)st->status, (PetscReal)st->active, (PetscReal)st->inactiveCount, (PetscReal)st->flips, (PetscReal)st->reversed, (PetscReal)st->anchored};
+  PetscReal     e[6] = {(PetscReal)st->status, (PetscReal)st->active, (PetscReal)st->inactiveCount, (PetscReal)st->flips, (PetscReal)st->reversed, st->anchored ? (st->fresh ? 2.0 : 1.0) : 0.0}; /* anchored, 2: fresh */
   PetscReal     X[3] = {p->X[0], p->X[1], p->X[2]};
   PetscInt      k = 0;
 
@@ -328,6 +328,7 @@ static PetscInt PointState(PetscBool pack, SPContactPoint *p, PetscReal *anchor,
     st->flips         = (PetscInt)e[3];
     st->reversed      = e[4] != 0.0 ? PETSC_TRUE : PETSC_FALSE;
     st->anchored      = e[5] != 0.0 ? PETSC_TRUE : PETSC_FALSE;
+    st->fresh         = e[5] == 2.0 ? PETSC_TRUE : PETSC_FALSE;
   }
   return k;
 }

@@ -19,16 +19,19 @@ cm_run() {
 cmval() { awk -v k="$2" '$1 == k { print $2 }' "$CASE_DIR/$1.check"; }
 cmabs() { awk -v k="$2" '$1 == k { v = $2 + 0; printf "%.10g\n", v < 0 ? -v : v }' "$CASE_DIR/$1.check"; } # |value| (e-notation safe)
 
-# F2: stick half-width within one element of c = b sqrt(1 - Q/(mu P)) = 0.076113 (Q = 0.5 mu P);
-# shifted creep <= 1e-10 h (h = 0.005); contact forces balance the loads (Q, P) to 1e-8; the same
-# figures on 1, 2 and 3 ranks (1e-8).
-# Not asserted (they miss friction.md's targets, see the README): the stick-zone centre (-2.5
-# elements) and the traction L2 error (22 %, target 5 %).
+# F2: stick half-width and centre within one element of c = b sqrt(1 - Q/(mu P)) = 0.076113 and 0
+# (Q = 0.5 mu P; measured -0.40 and -0.50 elements); shifted creep <= 1e-10 h (h = 0.005); contact
+# forces balance the loads (Q, P) to 1e-8; the same figures on 1, 2 and 3 ranks (1e-8). The traction
+# L2 error is 10.1 % against friction.md's 5 %: asserted only as a regression bound (10.5 %), the
+# target is missed (README, F2). Before points closing in a step were kept frictionless until the
+# commit (contact-friction.c, fresh points) the centre was -2.5 elements and the L2 error 22 %.
 test_cattaneo2d_f2_shifted() {
   local rc=0
   for np in 1 2 3; do
     cm_run "np$np" "$np" cm -options_file input/cattaneo2d.opts -contact_method shifted || return 1
     assert_le "half_width_error_elements_np$np" "$(cmabs "np$np" half_width_error_elements)" 1 || rc=1
+    assert_le "centre_error_elements_np$np" "$(cmabs "np$np" centre_error_elements)" 1 || rc=1
+    assert_le "traction_l2_regression_np$np" "$(cmval "np$np" traction_l2_error)" 0.105 || rc=1
     assert_le "stick_creep_np$np" "$(sval "$CASE_DIR/np$np.txt" contact_max_stick_creep)" 5e-13 || rc=1
     assert_close "force_balance_x_np$np" "$(sval "$CASE_DIR/np$np.txt" contact_force_x)" -0.0015 1e-8 || rc=1
     assert_close "force_balance_y_np$np" "$(sval "$CASE_DIR/np$np.txt" contact_force_y)" 0.01 1e-8 || rc=1
@@ -42,10 +45,9 @@ test_cattaneo2d_f2_shifted() {
 
 # F2 on the rigid-top-edge set-up (input/cattaneo2d_rigid.opts: point-symmetric, the normal phase
 # in 30 steps, then the slide in 10), against CM at the measured P and Q (Q/(mu P) = 0.524): stick
-# zone centred and its half-width within one element of c; 1 and 2 ranks identical to 1e-8. The
-# traction L2 error is 6.1 %, against friction.md's 5 %: asserted only as a regression bound (6.5 %),
-# the 5 % target is missed (README, F2). With the normal phase in one step the centre is off by
-# 3 elements (the anchoring of closing points).
+# zone centred (1e-8 elements) and its half-width within one element of c; 1 and 2 ranks identical
+# to 1e-8. The traction L2 error is 6.1 %, against friction.md's 5 %: asserted only as a regression
+# bound (6.5 %), the 5 % target is missed (README, F2).
 test_cattaneo2d_f2_rigid_edge() {
   local rc=0 np
   for np in 1 2; do
@@ -66,11 +68,13 @@ test_cattaneo2d_f2_rigid_edge() {
 }
 
 # F5: Q up to Q* = 0.5 mu P, then back to 0: stick half-width within one element of
-# d = b sqrt(1 - Q*/(2 mu P)) = 0.866025 b = 0.0932194; the tangential force back to 0
+# d = b sqrt(1 - Q*/(2 mu P)) = 0.866025 b = 0.0932194 (measured -0.37) and centred (1e-8 elements);
+# the tangential force back to 0
 test_cattaneo2d_f5_unload_shifted() {
   local rc=0
   cm_run unload 1 unload -options_file input/cattaneo2d_unload.opts -contact_method shifted || return 1
   assert_le half_width_error_elements "$(cmabs unload half_width_error_elements)" 1 || rc=1
+  assert_le centre_error_elements "$(cmabs unload centre_error_elements)" 1 || rc=1
   assert_le stick_creep "$(sval "$CASE_DIR/unload.txt" contact_max_stick_creep)" 5e-13 || rc=1
   assert_close tangential_force_zero "$(sval "$CASE_DIR/unload.txt" contact_force_x)" 0 0 1.5e-11 || rc=1 # 1e-8 Q
   assert_close normal_force "$(sval "$CASE_DIR/unload.txt" contact_force_y)" 0.01 1e-8 || rc=1
