@@ -1,8 +1,15 @@
 #!/usr/bin/env python3
-"""F2/F5 checker (friction.md): stick zone and shear traction of a 2D Cattaneo-Mindlin run.
+"""F2/F3/F5 checker (friction.md): stick zone and shear traction of a Cattaneo-Mindlin run.
 
 Usage: cattaneo_check.py CONTACT_CSV MODE [Q_ratio [P]]   (P: the normal force, default 0.01;
        give the measured P and Q/(mu P) for a displacement-controlled run)
+  MODE cm3d: F3, the 3D half model y >= 0 (input/cattaneo3d.opts): the normal force F is measured
+             (twice the sum of pressure x area), a = (3 F R*/(4 E*))^(1/3), c = a (1 - Q/(mu F))^(1/3),
+             q(r) = mu p0 sqrt(1-r^2/a^2) - mu p0 (c/a) sqrt(1-r^2/c^2) [r < c]. The stick radius
+             from the stick area (half disc: c = sqrt(2 A_stick/pi)), its centre from the stick points'
+             area-weighted mean x against the contact centre (mid x of the points with pressure);
+             h = sqrt(mean nodal area / 0.866) (equilateral triangles). Also printed: the smallest
+             slip radius and the largest stick radius (the ring where the two mix).
   MODE cm:   loading to Q = Q_ratio mu P (default 0.5): c = b sqrt(1 - Q/(mu P)),
              q(x) = mu p0 sqrt(1-x^2/b^2) - mu p0 (c/b) sqrt(1-x^2/c^2) [|x| < c]
   MODE unload: Q* = Q_ratio mu P, then back to Q = 0: d = b sqrt(1 - Q*/(2 mu P)),
@@ -20,8 +27,51 @@ E, nu, mu, R = 1.0, 0.3, 0.3, 1.0
 Es = E / (2 * (1 - nu * nu))          # two identical bodies
 Rs = R / 2
 
+def main3d(path, ratio):
+    rows = [r for r in csv.DictReader(open(path)) if float(r["z"]) < 0.05]
+    loaded = [r for r in rows if float(r["pressure"]) > 0.0]
+    F = 2 * sum(float(r["pressure"]) * float(r["area"]) for r in loaded)
+    a = (3 * F * Rs / (4 * Es)) ** (1.0 / 3.0)
+    p0 = 3 * F / (2 * math.pi * a * a)
+    c = a * (1 - ratio) ** (1.0 / 3.0)
+    xs = [float(r["x"]) for r in loaded]
+    xc = 0.5 * (min(xs) + max(xs))
+    h = math.sqrt(sum(float(r["area"]) for r in loaded) / len(loaded) / 0.866)
+    def rad(r): return math.hypot(float(r["x"]) - xc, float(r["y"]))
+    def q(s):
+        v = mu * p0 * math.sqrt(max(0.0, 1 - s * s / (a * a)))
+        if s < c: v -= mu * p0 * (c / a) * math.sqrt(1 - s * s / (c * c))
+        return v
+    stick = [r for r in loaded if int(round(float(r["status"]))) == 1]
+    slip = [r for r in loaded if int(round(float(r["status"]))) == 2]
+    if not stick:
+        print("no stick point"); sys.exit(1)
+    A = sum(float(r["area"]) for r in stick)
+    cs = math.sqrt(2 * A / math.pi)
+    xcs = sum(float(r["x"]) * float(r["area"]) for r in stick) / A
+    rmin = min((rad(r) for r in slip), default=float("nan"))
+    rmax = max(rad(r) for r in stick)
+    num = den = 0.0
+    for r in rows:
+        s = rad(r)
+        if s > 1.2 * a: continue
+        w = float(r["area"])
+        num += w * (-float(r["tx"]) - q(s)) ** 2
+        den += w * q(s) ** 2
+    out = dict(F=F, a=a, p0=p0, c_exact=c, h=h, stick_radius=cs, radius_error=cs - c,
+               radius_error_elements=(cs - c) / h, stick_centre_x=xcs - xc,
+               centre_error_elements=(xcs - xc) / h,
+               min_slip_radius=rmin, max_stick_radius=rmax, min_slip_error_elements=(rmin - c) / h,
+               max_stick_error_elements=(rmax - c) / h, traction_l2_error=math.sqrt(num / den),
+               stick_points=len(stick), slip_points=len(slip))
+    for k, v in out.items():
+        print(k, "%.10g" % v if isinstance(v, float) else v)
+
 def main():
     path, mode = sys.argv[1], sys.argv[2]
+    if mode == "cm3d":
+        main3d(path, float(sys.argv[3]) if len(sys.argv) > 3 else 0.5)
+        return
     ratio = float(sys.argv[3]) if len(sys.argv) > 3 else 0.5
     P = float(sys.argv[4]) if len(sys.argv) > 4 else 0.01
     b = math.sqrt(4 * P * Rs / (math.pi * Es))

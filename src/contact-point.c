@@ -166,6 +166,37 @@ static void TangentBasis(PetscInt dim, const PetscReal n[], PetscReal t[2][3])
   }
 }
 
+/* Friction at a slave point held by a Dirichlet condition in exactly one component k (a symmetry
+   plane or a roller) acts only across that direction: when e_k lies mostly in the tangent plane,
+   its tangential part is removed from the basis t (3D: one direction left, n x e_k; 2D: none; the
+   removed one is a zero vector). The relative motion along e_k is zero on a symmetry plane and the
+   traction along it is the reaction's; kept, it would give the stick constraint a component along
+   the normal wherever the facet normal tilts out of the plane (a discretised curved surface), and
+   the tangential shift would then hold the normal gap open against the normal shift. */
+static void DropHeldDirection(PetscInt dim, const PetscInt sdof[], const PetscReal n[], PetscReal t[2][3])
+{
+  PetscInt  k = -1, nheld = 0;
+  PetscReal v[3] = {0, 0, 0}, len;
+
+  for (PetscInt d = 0; d < dim; ++d)
+    if (sdof[d] < 0) k = d, nheld++;
+  if (nheld != 1) return;
+  for (PetscInt d = 0; d < dim; ++d) v[d] = (d == k ? 1.0 : 0.0) - n[k] * n[d];
+  len = SPNorm(dim, v);
+  if (len <= 0.5) return; /* e_k mostly normal: the held component is not a tangential one */
+  for (PetscInt d = 0; d < dim; ++d) v[d] /= len;
+  for (PetscInt a = 0; a < dim - 1; ++a) { /* project v out, then Gram-Schmidt; a dependent vector becomes 0 */
+    PetscReal tv = SPDot(dim, t[a], v), l;
+    for (PetscInt d = 0; d < dim; ++d) t[a][d] -= tv * v[d];
+    for (PetscInt b = 0; b < a; ++b) {
+      const PetscReal tb = SPDot(dim, t[a], t[b]);
+      for (PetscInt d = 0; d < dim; ++d) t[a][d] -= tb * t[b][d];
+    }
+    l = SPNorm(dim, t[a]);
+    for (PetscInt d = 0; d < dim; ++d) t[a][d] = l > 1e-6 ? t[a][d] / l : 0.0;
+  }
+}
+
 /* Whether X at load factor `load` is the state of the last evaluation: same load factor and the
    same values (the line search evaluates its work vector W and then copies it into the solution,
    so the vector's identity says little; comparing the owned values costs one pass). Collective. */
@@ -214,6 +245,7 @@ PetscErrorCode SPContactEvaluate(SPContact c, Vec X)
   PetscCall(SPProblemRestoreLocalState(c->problem, &locX));
   for (PetscInt i = 0; i < c->n; ++i) {
     TangentBasis(c->dim, c->pt[i].geo.normal, c->pt[i].geo.tangent);
+    if (c->friction) DropHeldDirection(c->dim, c->pt[i].sdof, c->pt[i].geo.normal, c->pt[i].geo.tangent);
     SPFrictionKinematics(c, i);
   }
   if (c->evaluations == 1)
