@@ -250,6 +250,9 @@ struct _n_SPContact {
   SPShiftAccel    accel;     /* NULL: the plain update (params.accel none) */
   PetscReal      *accS, *accG, *accNew; /* per point scratch of the accelerated update */
   PetscBool      *accIn;
+  SPShiftAccel    accelT;    /* the same for the tangential shifts of stuck points (2 slots per point) */
+  PetscReal      *accTS, *accTG, *accTNew;
+  PetscBool      *accTIn;
   PetscInt       *known;     /* per point: master facets already in the Jacobian pattern */
   /* evaluation cache: the state the geometry was last evaluated at */
   Vec             evalX;       /* copy of the displacement of the last evaluation (NULL: none yet) */

@@ -311,39 +311,74 @@ PetscErrorCode SPFrictionAnchor(SPContact c, PetscBool commit)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The clip eps_T |s_T| <= mu lambda of point i: the cone of the multiplier lambda_N = -eps s_N, or
+   of the current pressure where that is larger (a stuck point inside the current cone keeps its
+   traction; an open point with a reset shift gets none). Returns lambda. */
+static PetscReal ClipToCone(SPContact c, PetscInt i)
+{
+  SPContactPoint *pt = &c->pt[i];
+  const PetscInt  nt = c->dim - 1;
+  PetscReal       p, k, lam, ns;
+
+  SPContactPointTraction(c, i, &p, &k);
+  lam = PetscMax(-pt->eps * pt->st.sN, p);
+  ns  = SPNorm(nt, pt->st.sT);
+  if (pt->epsT * ns > pt->geo.mu * lam)
+    for (PetscInt a = 0; a < nt; ++a) pt->st.sT[a] *= lam > 0.0 ? pt->geo.mu * lam / (pt->epsT * ns) : 0.0;
+  return lam;
+}
+
+/* |Delta s_T| of point i against its old shift */
+static PetscReal ShiftChange(SPContact c, PetscInt i, const PetscReal old[])
+{
+  PetscReal d[2] = {0, 0};
+  for (PetscInt a = 0; a < c->dim - 1; ++a) d[a] = old[a] - c->pt[i].st.sT[a];
+  return SPNorm(c->dim - 1, d);
+}
+
 /* The tangential shift update s_T <- -t_T/eps_T of the points active in the previous and the
    current iterate (open points: s_T = 0), then the clip eps_T |s_T| <= mu lambda_N with
-   lambda_N = -eps s_N (after the normal update). *maxDs: max |Delta s_T| (collective max). */
+   lambda_N = -eps s_N (after the normal update). With -contact_shift_accel anderson the stuck
+   points' updates (s_T <- s_T + Dg_T: the same affine fixed point as the normal one) get their own
+   Anderson step (contact-accel.c), then the clip. *maxDs: max |Delta s_T| (collective max). */
 PetscErrorCode SPFrictionUpdate(SPContact c, PetscReal *maxDs)
 {
   const PetscInt nt = c->dim - 1;
   PetscReal      dmax = 0.0, rmax = 0.0, all[2], loc[2];
+  PetscBool      used = PETSC_FALSE;
 
   PetscFunctionBeginUser;
   *maxDs = 0.0;
   if (!c->friction) PetscFunctionReturn(PETSC_SUCCESS);
   for (PetscInt i = 0; i < c->n; ++i) {
     SPContactPoint *pt = &c->pt[i];
-    PetscReal       y[2], t[2], old[2] = {pt->st.sT[0], pt->st.sT[1]}, lam, ns, ds;
-    PetscBool       stick = PETSC_TRUE, activeNow = SPContactPointActive(c, i);
+    PetscReal       y[2], t[2], old[2] = {pt->st.sT[0], pt->st.sT[1]}, lam, ds;
+    PetscBool       stick = PETSC_TRUE, rule = PETSC_FALSE, activeNow = SPContactPointActive(c, i);
+    if (c->accelT) c->accTIn[2 * i] = c->accTIn[2 * i + 1] = PETSC_FALSE;
     if (pt->geo.mu <= 0.0) continue;
     if (activeNow && pt->st.active) {
       SPFrictionTraction(c, i, y, t, &stick);
       for (PetscInt a = 0; a < nt; ++a) pt->st.sT[a] = -t[a] / pt->epsT;
+      rule = PETSC_TRUE;
     } else if (!activeNow) pt->st.sT[0] = pt->st.sT[1] = 0.0;
-    { /* the cone of the multiplier, or of the current pressure where that is larger (a stuck point
-         inside the current cone keeps its traction; an open point with a reset shift gets none) */
-      PetscReal p, k;
-      SPContactPointTraction(c, i, &p, &k);
-      lam = PetscMax(-pt->eps * pt->st.sN, p);
+    if (c->accelT && rule && stick) { /* the clip after the accelerated step */
+      for (PetscInt a = 0; a < nt; ++a) {
+        const PetscInt k = 2 * i + a;
+        c->accTIn[k] = PETSC_TRUE, c->accTS[k] = old[a], c->accTG[k] = pt->st.sT[a] - old[a], c->accTNew[k] = pt->st.sT[a];
+      }
+      continue;
     }
-    ns  = SPNorm(nt, pt->st.sT);
-    if (pt->epsT * ns > pt->geo.mu * lam)
-      for (PetscInt a = 0; a < nt; ++a) pt->st.sT[a] *= lam > 0.0 ? pt->geo.mu * lam / (pt->epsT * ns) : 0.0;
-    for (PetscInt a = 0; a < nt; ++a) old[a] -= pt->st.sT[a];
-    ds   = SPNorm(nt, old);
+    lam  = ClipToCone(c, i);
+    ds   = ShiftChange(c, i, old);
     dmax = PetscMax(dmax, ds);
     if (!stick && lam > 0.0) rmax = PetscMax(rmax, pt->epsT * ds / (pt->geo.mu * lam));
+  }
+  if (c->accelT) PetscCall(SPShiftAccelUpdate(c->accelT, c->accTIn, c->accTS, c->accTG, c->accTNew, &used));
+  for (PetscInt i = 0; c->accelT && i < c->n; ++i) {
+    if (!c->accTIn[2 * i]) continue;
+    for (PetscInt a = 0; a < nt; ++a) c->pt[i].st.sT[a] = c->accTNew[2 * i + a];
+    (void)ClipToCone(c, i);
+    dmax = PetscMax(dmax, ShiftChange(c, i, &c->accTS[2 * i]));
   }
   loc[0] = dmax, loc[1] = rmax;
   PetscCallMPI(MPI_Allreduce(loc, all, 2, MPIU_REAL, MPI_MAX, PetscObjectComm((PetscObject)c->dm)));

@@ -126,6 +126,8 @@ PetscErrorCode SPContactPointsSetUp(SPContact c, DMLabel slave)
   if (c->params.accel != SP_ACCEL_NONE) {
     PetscCall(SPShiftAccelCreate(PetscObjectComm((PetscObject)c->dm), c->n, c->params.accelDepth, &c->accel));
     PetscCall(PetscCalloc4(c->n + 1, &c->accS, c->n + 1, &c->accG, c->n + 1, &c->accNew, c->n + 1, &c->accIn));
+    PetscCall(SPShiftAccelCreate(PetscObjectComm((PetscObject)c->dm), 2 * c->n, c->params.accelDepth, &c->accelT));
+    PetscCall(PetscCalloc4(2 * c->n + 1, &c->accTS, 2 * c->n + 1, &c->accTG, 2 * c->n + 1, &c->accTNew, 2 * c->n + 1, &c->accTIn));
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -138,6 +140,8 @@ PetscErrorCode SPContactPointsDestroy(SPContact c)
   PetscCall(PetscFree2(c->hist, c->nhist));
   PetscCall(SPShiftAccelDestroy(&c->accel));
   PetscCall(PetscFree4(c->accS, c->accG, c->accNew, c->accIn));
+  PetscCall(SPShiftAccelDestroy(&c->accelT));
+  PetscCall(PetscFree4(c->accTS, c->accTG, c->accTNew, c->accTIn));
   PetscCall(VecDestroy(&c->evalX));
   PetscCall(DMDestroy(&c->dmC));
   PetscFunctionReturn(PETSC_SUCCESS);

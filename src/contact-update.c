@@ -66,6 +66,7 @@ PetscErrorCode SPContactBeginSolve(SPContact c, Vec X)
   c->setSettled = PETSC_FALSE;
   for (PetscInt i = 0; i < c->n; ++i) c->nhist[i] = 0;
   PetscCall(SPShiftAccelReset(c->accel));
+  PetscCall(SPShiftAccelReset(c->accelT));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -175,7 +176,8 @@ PetscErrorCode SPContactNewtonUpdate(SPContact c, Vec W, PetscBool *changed)
     PetscBool fsettled;
     PetscCall(SPFrictionSettled(c, &fsettled));
     if (fsettled || !c->settled) PetscCall(SPFrictionUpdate(c, &dsT));
-  }
+    else PetscCall(SPShiftAccelReset(c->accelT));
+  } else PetscCall(SPShiftAccelReset(c->accelT));
   PetscCall(Bookkeep(c, maxDs, PETSC_TRUE));
   c->setSettled = c->stats.activeChanged == 0 ? PETSC_TRUE : PETSC_FALSE;
   PetscCallMPI(MPI_Allreduce(&maxDs, &all, 1, MPIU_REAL, MPI_MAX, PetscObjectComm((PetscObject)c->dm)));
