@@ -160,7 +160,7 @@ static PetscErrorCode UpdateShifts(SPContact c, PetscReal *maxDs)
 PetscErrorCode SPContactNewtonUpdate(SPContact c, Vec W, PetscBool *changed)
 {
   PetscReal maxDs = 0.0, all, dsT = 0.0;
-  PetscBool applies, settled;
+  PetscBool applies, settled, fsettled, fupdate = PETSC_FALSE;
 
   PetscFunctionBeginUser;
   PetscCall(SPContactEvaluate(c, W));
@@ -173,11 +173,11 @@ PetscErrorCode SPContactNewtonUpdate(SPContact c, Vec W, PetscBool *changed)
   if (applies) PetscCall(UpdateShifts(c, &maxDs));
   else PetscCall(SPShiftAccelReset(c->accel)); /* the active set moved (or the gaps hold): a new map */
   if (settled && c->method->timing == SP_UPDATE_NEWTON) { /* the tangential shift, after the normal one */
-    PetscBool fsettled;
     PetscCall(SPFrictionSettled(c, &fsettled));
-    if (fsettled || !c->settled) PetscCall(SPFrictionUpdate(c, &dsT));
-    else PetscCall(SPShiftAccelReset(c->accelT));
-  } else PetscCall(SPShiftAccelReset(c->accelT));
+    fupdate = fsettled || !c->settled ? PETSC_TRUE : PETSC_FALSE;
+  }
+  if (fupdate) PetscCall(SPFrictionUpdate(c, &dsT));
+  else PetscCall(SPShiftAccelReset(c->accelT)); /* the stick/slip set moved: a new map */
   PetscCall(Bookkeep(c, maxDs, PETSC_TRUE));
   c->setSettled = c->stats.activeChanged == 0 ? PETSC_TRUE : PETSC_FALSE;
   PetscCallMPI(MPI_Allreduce(&maxDs, &all, 1, MPIU_REAL, MPI_MAX, PetscObjectComm((PetscObject)c->dm)));

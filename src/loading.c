@@ -2,8 +2,9 @@
    and obstacle motion; shifts carry over. Inside a step, methods that update their shifts after a
    converged solve (augmented Lagrangian) repeat the solve until their update is done or its budget
    is spent. A step that fails either way is halved, within a budget of cut-backs and above a floor
-   on the increment, and grows back after a few converged steps; past either, or past the wall-time limit (checked before every step), the run
-   stops with a one-line reason; converged steps keep their output. After every written step the
+   on the increment, and grows back after a few converged steps; past either, or past the
+   wall-time limit (checked before every step), the run stops with a one-line reason; converged
+   steps keep their output. After every written step the
    restart data goes into the h5 and a pending SIGTERM/SIGINT (signals.c) stops the run there, on
    every rank. A restarted run (-restart) starts from the step, load factor and increment
    SPRestartLoad restored. */

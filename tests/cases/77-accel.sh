@@ -75,10 +75,10 @@ CASES
 # With friction Anderson also steps the stuck points' tangential shifts (s_T <- s_T + Dg_T, the
 # same affine fixed point). F4, the frictional two-pass patch at alpha 100: the plain update takes
 # 177 Newton iterations, Anderson 50 (measured); both pass the patch (pressure and tangential
-# traction at every point within 1e-6, creep <= 1e-10 h, force Q to 1e-8); 1 and 2 ranks agree.
+# traction at every point within 1e-6, creep <= 1e-10 h, force Q to 1e-8); 1, 2 and 3 ranks agree.
 test_accel_friction_patch() {
   local rc=0 np
-  for np in 1 2; do
+  for np in 1 2 3; do
     local out=$CASE_DIR/np$np.txt dev
     spc "$out" $np -options_file input/friction_patch_4_5.opts -contact_shift_accel anderson -output_dir "$CASE_DIR" -output_name np$np || return 1
     dev=$(awk -F, 'NR>1{ d = ($8 - 0.01) / 0.01; if (d < 0) d = -d; if (d > p) p = d; t = $10 < 0 ? -$10 : $10; e = (t - 0.0015) / 0.0015; if (e < 0) e = -e; if (e > q) q = e } END { printf "%.3e %.3e\n", p, q }' "$CASE_DIR/np${np}_contact.csv")
@@ -90,6 +90,8 @@ test_accel_friction_patch() {
     assert_le "stick_creep_np$np" "$(sval "$out" contact_max_stick_creep)" 2e-11 || rc=1
     assert_close "force_x_np$np" "$(sval "$out" contact_force_x)" -0.0015 1e-8 || rc=1
   done
-  same_summary "$CASE_DIR/np1.txt" "$CASE_DIR/np2.txt" 1e-8 contact_force_x contact_force_y contact_peak_pressure displacement_max contact_stick_points newton_iterations || rc=1
+  for np in 2 3; do
+    same_summary "$CASE_DIR/np1.txt" "$CASE_DIR/np$np.txt" 1e-8 contact_force_x contact_force_y contact_peak_pressure displacement_max contact_stick_points newton_iterations || rc=1
+  done
   return $rc
 }
