@@ -43,7 +43,8 @@ typedef struct {
                              stress/tangent below (fast-elastic.c); otherwise PetscFE only */
   PetscPointFunc mmsSource; /* the body force of the manufactured solution for this law (NULL: none) */
   /* a nonlinear law's fast element operator: first Piola stress P[i dim + J] and tangent
-     A[((i dim + k) dim + J) dim + L] = dP_iJ/dF_kL from u_x and the cell's parameters (NULL: the
+     A[((i dim + k) dim + J) dim + L] = dP_iJ/dF_kL from u_x and the cell's parameters, hyperelastic
+     (A_iJkL = A_kLiJ: the fast operator assembles half the element matrix and mirrors it) (NULL: the
      law is linear, or PetscFE only) */
   void (*stress)(PetscInt dim, const PetscReal param[], const PetscScalar u_x[], PetscScalar P[]);
   void (*tangent)(PetscInt dim, const PetscReal param[], const PetscScalar u_x[], PetscScalar A[]);
