@@ -373,6 +373,7 @@ struct _n_SPSolver {
   PetscInt            stallIts, sinceProgress, cycling; /* stagnation: stop after stallIts iterations without progress (cycling: of them, with active-set changes) */
   PetscReal           bestF, bestGap;
   PetscBool           stalled;
+  PetscBool           reorthogonalise; /* GMRES re-orthogonalises every Arnoldi vector (after a breakdown) */
   PetscInt            jacReuseMax, jacReused, jacVersion, jacReuses; /* Jacobian reuse on an unchanged active set */
   PetscBool           jacValid;
   PetscBool           inexact;              /* linear tolerance from the Newton iteration's progress */

@@ -179,6 +179,7 @@ PetscErrorCode SPAppSummary(SPApp a)
   PetscCall(PetscViewerASCIIPrintf(v, "newton_iterations %" PetscInt_FMT "\nlinear_iterations %" PetscInt_FMT "\nfunction_evaluations %" PetscInt_FMT "\n", newton, linear, functions));
   PetscCall(SPSolverGetJacobianReuses(a->solver, &reuses));
   PetscCall(PetscViewerASCIIPrintf(v, "jacobian_reuses %" PetscInt_FMT "\n", reuses));
+  PetscCall(PetscViewerASCIIPrintf(v, "krylov_reorthogonalised %s\n", SPSolverReorthogonalises(a->solver) ? "yes" : "no"));
   PetscCall(SPSolverGetBulkOperator(a->solver, &bulk));
   PetscCall(PetscViewerASCIIPrintf(v, "bulk_operator %s\n", bulk));
   PetscCall(PetscViewerASCIIPrintf(v, "displacement_max %.10e\n", (double)umax));

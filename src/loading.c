@@ -10,10 +10,26 @@
    SPRestartLoad restored. */
 #include <spcontact-impl.h>
 
+/* The step's solve and, for methods that update after a converged solve, those updates and solves */
+static PetscErrorCode SolveAndUpdate(SPApp app, SNESConvergedReason *reason)
+{
+  PetscFunctionBeginUser;
+  PetscCall(SPSolverSolve(app->solver, app->u, reason));
+  for (PetscInt k = 0; *reason > 0; ++k) { /* the method's update after a converged solve */
+    PetscBool again, failed;
+    PetscCall(SPContactSolveUpdate(app->contact, app->u, k, &again, &failed));
+    if (failed) *reason = SNES_DIVERGED_MAX_IT;
+    if (!again) break;
+    PetscCall(SPSolverSolve(app->solver, app->u, reason));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscErrorCode SolveStep(SPApp app, PetscReal load, PetscInt step, Vec ubackup, PetscBool *ok)
 {
   SNESConvergedReason reason;
   FILE               *fp;
+  PetscBool           retry = PETSC_FALSE;
 
   PetscFunctionBeginUser;
   PetscCall(VecCopy(app->u, ubackup));
@@ -21,13 +37,12 @@ static PetscErrorCode SolveStep(SPApp app, PetscReal load, PetscInt step, Vec ub
   PetscCall(SPProblemSetLoadFactor(app->problem, load));
   PetscCall(SPOutputGetHistoryFile(app->output, &fp));
   PetscCall(SPSolverSetHistory(app->solver, fp, step));
-  PetscCall(SPSolverSolve(app->solver, app->u, &reason));
-  for (PetscInt k = 0; reason > 0; ++k) { /* the method's update after a converged solve */
-    PetscBool again, failed;
-    PetscCall(SPContactSolveUpdate(app->contact, app->u, k, &again, &failed));
-    if (failed) reason = SNES_DIVERGED_MAX_IT;
-    if (!again) break;
-    PetscCall(SPSolverSolve(app->solver, app->u, &reason));
+  PetscCall(SolveAndUpdate(app, &reason));
+  if (reason == SNES_DIVERGED_LINEAR_SOLVE) PetscCall(SPSolverRecoverBreakdown(app->solver, &retry));
+  if (retry) { /* once per run: the same step from its start with the hardened Krylov method */
+    PetscCall(VecCopy(ubackup, app->u));
+    PetscCall(SPContactRestoreState(app->contact));
+    PetscCall(SolveAndUpdate(app, &reason));
   }
   *ok = reason > 0 ? PETSC_TRUE : PETSC_FALSE;
   if (!*ok) {

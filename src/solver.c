@@ -588,6 +588,38 @@ PetscErrorCode SPSolverGetCounts(SPSolver s, PetscInt *newton, PetscInt *linear,
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* A GMRES breakdown (KSP_DIVERGED_BREAKDOWN: classical Gram-Schmidt lost the orthogonality of the
+   Arnoldi basis, as it does with friction at alpha ~ 1000, F2 Cattaneo-Mindlin) is answered once
+   per run: every Arnoldi vector is re-orthogonalised from then on (about 25 % more time per
+   linear iteration at alpha 10, so not the default), and *retry asks the caller to solve the
+   step again instead of cutting it back. */
+PetscErrorCode SPSolverRecoverBreakdown(SPSolver s, PetscBool *retry)
+{
+  KSP                       ksp;
+  KSPConvergedReason        kr;
+  KSPGMRESCGSRefinementType type;
+  PetscBool                 gmres;
+
+  PetscFunctionBeginUser;
+  *retry = PETSC_FALSE;
+  PetscCall(SNESGetKSP(s->snes, &ksp));
+  PetscCall(KSPGetConvergedReason(ksp, &kr));
+  PetscCall(PetscObjectTypeCompare((PetscObject)ksp, KSPGMRES, &gmres));
+  if (kr != KSP_DIVERGED_BREAKDOWN || !gmres || s->reorthogonalise) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(KSPGMRESGetCGSRefinementType(ksp, &type));
+  if (type == KSP_GMRES_CGS_REFINE_ALWAYS) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(KSPGMRESSetCGSRefinementType(ksp, KSP_GMRES_CGS_REFINE_ALWAYS));
+  s->reorthogonalise = PETSC_TRUE;
+  *retry             = PETSC_TRUE;
+  PetscCall(PetscPrintf(PetscObjectComm((PetscObject)ksp), "linear solve broke down (GMRES lost the orthogonality of its basis): the step again, re-orthogonalising from now on\n"));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscBool SPSolverReorthogonalises(SPSolver s)
+{
+  return s->reorthogonalise;
+}
+
 /* Newton iterations that kept the last assembled Jacobian and its preconditioner */
 PetscErrorCode SPSolverGetJacobianReuses(SPSolver s, PetscInt *reuses)
 {
