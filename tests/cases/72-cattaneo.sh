@@ -116,3 +116,27 @@ gradient on a traction condition|input/cattaneo2d.opts|-bc_2_gradient 1,0
 gradient with the wrong number of components|input/cattaneo2d.opts|-bc_3_gradient 1,0,0
 CASES
 }
+
+# alpha 1000 with GMRES + GAMG: the Arnoldi basis loses its orthogonality (KSP_DIVERGED_BREAKDOWN
+# in the second step, on 1 and 2 ranks), which used to end in cut-backs until the run stopped. The
+# solver re-orthogonalises from then on and solves the step again: no cut-back, the loads balanced
+# to 1e-8, creep <= 1e-10 h. F2 shortened to its normal step and two shear steps of 0.1 Q each
+# (Q = 0.2 x 0.5 mu P at the end), -contact_step_cap 0.1 (at alpha 1000 the default cap of one h
+# lets the first normal step stall). About 20 s on 1 rank.
+test_cattaneo2d_alpha1000_breakdown() {
+  local rc=0 r=0.3333333333333333
+  for np in 1 2; do
+    local out=$CASE_DIR/np$np.txt
+    spc "$out" "$np" -options_file input/cattaneo2d.opts -contact_method shifted -contact_alpha 1000 -contact_step_cap 0.1 \
+      -load_steps 3 -bc_1_ramp 0,$r -bc_2_ramp $r,1 -bc_3_ramp $r,1 -bc_2_value 0.00015,0 -bc_3_gradient -0.00045,0 \
+      -output_dir "$CASE_DIR" -output_name "np$np" || return 1
+    assert_eq "converged_np$np" "$(sval "$out" converged)" yes || rc=1
+    assert_eq "cutbacks_np$np" "$(sval "$out" cutbacks)" 0 || rc=1
+    assert_eq "reorthogonalised_np$np" "$(sval "$out" krylov_reorthogonalised)" yes || rc=1
+    grep -q "^linear solve broke down" "$out" || { echo "np$np: no breakdown message FAILED"; rc=1; }
+    assert_close "force_balance_x_np$np" "$(sval "$out" contact_force_x)" -0.0003 1e-8 || rc=1
+    assert_close "force_balance_y_np$np" "$(sval "$out" contact_force_y)" 0.01 1e-8 || rc=1
+    assert_le "stick_creep_np$np" "$(sval "$out" contact_max_stick_creep)" 5e-13 || rc=1
+  done
+  return $rc
+}
