@@ -253,6 +253,33 @@ static PetscErrorCode MarkFreeSides(SPContact c)
 }
 
 /* Every pair's label and values exist and are not empty */
+/* The slave and master surfaces of pair k share no vertex: a shared vertex would face a master
+   facet that contains it (self-contact, not supported), and the solve would fail for no reason
+   the user could see */
+static PetscErrorCode CheckDisjoint(SPContact c, PetscInt k)
+{
+  const SPPair *p = &c->pair[k];
+  DMLabel       s, m;
+  PetscInt      vStart, vEnd, shared = 0, sharedAll;
+
+  PetscFunctionBeginUser;
+  PetscCall(SPMeshCreateCompletedLabel(c->dm, p->label, p->nslave, p->slave, "spcontact_check_slave", &s));
+  PetscCall(SPMeshCreateCompletedLabel(c->dm, p->label, p->nmaster, p->master, "spcontact_check_master", &m));
+  PetscCall(DMPlexGetDepthStratum(c->dm, 0, &vStart, &vEnd));
+  for (PetscInt v = vStart; v < vEnd; ++v) {
+    PetscInt a, b;
+    PetscCall(DMLabelGetValue(s, v, &a));
+    if (a != 1) continue;
+    PetscCall(DMLabelGetValue(m, v, &b));
+    if (b == 1) shared++;
+  }
+  PetscCall(DMRemoveLabel(c->dm, "spcontact_check_slave", NULL));
+  PetscCall(DMRemoveLabel(c->dm, "spcontact_check_master", NULL));
+  PetscCallMPI(MPI_Allreduce(&shared, &sharedAll, 1, MPIU_INT, MPI_MAX, PetscObjectComm((PetscObject)c->dm)));
+  PetscCheck(sharedAll == 0, PetscObjectComm((PetscObject)c->dm), PETSC_ERR_USER_INPUT, "contact pair %" PetscInt_FMT ": its slave and master surfaces (-contact_pair_%" PetscInt_FMT "_slave_values, _master_values) share vertices; self-contact is not supported: give the pair the surfaces of two separate bodies", k, k);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode SPContactPairsCheckLabels(SPContact c)
 {
   PetscFunctionBeginUser;
@@ -262,6 +289,7 @@ PetscErrorCode SPContactPairsCheckLabels(SPContact c)
     PetscCall(SPMeshCheckLabel(c->dm, c->pair[k].label, c->pair[k].nslave, c->pair[k].slave, opt));
     PetscCall(PetscSNPrintf(opt, sizeof(opt), "-contact_pair_%" PetscInt_FMT "_master_values", k));
     PetscCall(SPMeshCheckLabel(c->dm, c->pair[k].label, c->pair[k].nmaster, c->pair[k].master, opt));
+    PetscCall(CheckDisjoint(c, k));
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -80,6 +80,7 @@ inexact settled factor zero|input/hertz2d.opts|-solver_inexact_settled 0
 restart file missing|input/hertz2d.opts|-restart /nonexistent.h5
 pair master value missing|input/hertz2d_twobody.opts|-contact_pair_0_master_values 42
 pair slave equals master|input/hertz2d_twobody.opts|-contact_pair_0_master_values 3 -contact_pair_0_slave_values 3
+pair surfaces share a vertex (adjacent faces of one body)|input/block2d.opts|-contact_pair_0_slave_values 1 -contact_pair_0_master_values 2
 inverted cells (box bounds reversed)|input/block2d.opts|-dm_plex_box_lower 1,0 -dm_plex_box_upper 0,1
 flat cells (zero box width)|input/block2d.opts|-dm_plex_box_upper 0,1
 manufactured solution with contact|input/hertz2d.opts|-material_mms 0.01
