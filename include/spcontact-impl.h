@@ -229,6 +229,7 @@ struct _n_SPContact {
   PetscInt        nob;
   SPObstacle      ob[SP_MAX_OBSTACLES];
   PetscReal       penalty, alpha, gapTol, stepCap;
+  PetscBool       capTightened; /* -contact_step_cap divided by 10 after a stalled step (once per run) */
   PetscReal       gapRtol, lengthScale; /* gapTol = gapRtol x lengthScale unless -contact_gap_tol is given */
   PetscBool       gapTolSet;
   PetscReal       mu, alphaT, creepRtol, slipRtol; /* friction (-contact_friction_*) */

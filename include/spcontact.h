@@ -79,6 +79,7 @@ PETSC_EXTERN PetscErrorCode SPContactMarkRows(SPContact, Vec);
 PETSC_EXTERN PetscErrorCode SPContactBeginSolve(SPContact, Vec);
 PETSC_EXTERN PetscErrorCode SPContactNewtonUpdate(SPContact, Vec, PetscBool *);
 PETSC_EXTERN PetscErrorCode SPContactLimitStep(SPContact, Vec, Vec, Vec, PetscBool *);
+PETSC_EXTERN PetscErrorCode SPContactTightenStepCap(SPContact, PetscBool *);
 PETSC_EXTERN PetscErrorCode SPContactSolveUpdate(SPContact, Vec, PetscInt, PetscBool *, PetscBool *);
 PETSC_EXTERN PetscErrorCode SPContactConverged(SPContact, PetscBool *);
 PETSC_EXTERN PetscErrorCode SPContactGetStats(SPContact, SPContactStats *);
@@ -117,6 +118,7 @@ PETSC_EXTERN PetscErrorCode SPSolverGetCounts(SPSolver, PetscInt *, PetscInt *, 
 PETSC_EXTERN PetscErrorCode SPSolverGetJacobianReuses(SPSolver, PetscInt *);
 PETSC_EXTERN PetscErrorCode SPSolverRecoverBreakdown(SPSolver, PetscBool *);
 PETSC_EXTERN PetscBool      SPSolverReorthogonalises(SPSolver);
+PETSC_EXTERN PetscBool      SPSolverStalled(SPSolver);
 PETSC_EXTERN const char    *SPSolverReasonName(SPSolver, SNESConvergedReason);
 PETSC_EXTERN PetscErrorCode SPSolverGetBulkOperator(SPSolver, const char **);
 PETSC_EXTERN PetscErrorCode SPSolverDestroy(SPSolver *);

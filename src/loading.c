@@ -29,7 +29,6 @@ static PetscErrorCode SolveStep(SPApp app, PetscReal load, PetscInt step, Vec ub
 {
   SNESConvergedReason reason;
   FILE               *fp;
-  PetscBool           retry = PETSC_FALSE;
 
   PetscFunctionBeginUser;
   PetscCall(VecCopy(app->u, ubackup));
@@ -38,8 +37,11 @@ static PetscErrorCode SolveStep(SPApp app, PetscReal load, PetscInt step, Vec ub
   PetscCall(SPOutputGetHistoryFile(app->output, &fp));
   PetscCall(SPSolverSetHistory(app->solver, fp, step));
   PetscCall(SolveAndUpdate(app, &reason));
-  if (reason == SNES_DIVERGED_LINEAR_SOLVE) PetscCall(SPSolverRecoverBreakdown(app->solver, &retry));
-  if (retry) { /* once per run: the same step from its start with the hardened Krylov method */
+  for (PetscInt k = 0; k < 2 && reason < 0; ++k) { /* the recoveries, each once per run: the same */
+    PetscBool retry = PETSC_FALSE;                  /* step again from its start, no cut-back */
+    if (reason == SNES_DIVERGED_LINEAR_SOLVE) PetscCall(SPSolverRecoverBreakdown(app->solver, &retry));
+    else if (SPSolverStalled(app->solver) || reason == SNES_DIVERGED_MAX_IT) PetscCall(SPContactTightenStepCap(app->contact, &retry));
+    if (!retry) break;
     PetscCall(VecCopy(ubackup, app->u));
     PetscCall(SPContactRestoreState(app->contact));
     PetscCall(SolveAndUpdate(app, &reason));

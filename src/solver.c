@@ -620,6 +620,12 @@ PetscBool SPSolverReorthogonalises(SPSolver s)
   return s->reorthogonalise;
 }
 
+/* The last solve was stopped by the stagnation test */
+PetscBool SPSolverStalled(SPSolver s)
+{
+  return s->stalled;
+}
+
 /* Newton iterations that kept the last assembled Jacobian and its preconditioner */
 PetscErrorCode SPSolverGetJacobianReuses(SPSolver s, PetscInt *reuses)
 {

@@ -82,13 +82,17 @@ test_units_cutback_floor() {
 }
 
 # The two-pass curved stall (issue 12): two-pass shifted on the two-body Hertz case. alpha 100
-# converges; at alpha 1000 the semismooth Newton iteration cycles between two active sets (period
-# 2, ~19 points flip, the shift never updates): the stagnation test stops each solve after
-# -solver_stall_its iterations without progress with one line naming the stall and one naming
-# its cause (the active set changed at every one of them) and what to use instead, and the
-# cut-back budget ends the run: both solves end STALLED, before -snes_max_it (50) each. Why it
-# cycles: on a curved non-matching interface the two passes cannot close every gap of both
-# surfaces at once, so the shifts of the two sides compete for the same points.
+# converges. At alpha 1000 the semismooth Newton iteration cycles between two active sets (period
+# 2, ~19 points flip, the shift never updates): the stagnation test stops the solve after
+# -solver_stall_its iterations without progress with one line naming the stall and one naming its
+# cause (the active set changed at every one of them) and what to use instead. Why it cycles: on a
+# curved non-matching interface the two passes cannot close every gap of both surfaces at once,
+# the shifts of the two sides compete for the same points, and one h of new penetration per
+# Newton step (the default -contact_step_cap 1) is far more than the penetration at this penalty.
+# The recovery then solves the step again with the cap at 0.1 (once per run, one line) and it
+# converges without a cut-back: the force to 1e-8, 51 Newton iterations (15 of them stalled).
+# Without the step control (-contact_step_cap 0: no recovery either) both solves stall, the
+# cut-back budget ends the run, exit 2, before -snes_max_it (50) each.
 test_units_twopass_stall() {
   local out rc=0 code n
   out=$CASE_DIR/a100.txt
@@ -98,13 +102,24 @@ test_units_twopass_stall() {
   assert_close force_alpha100 "$(sval "$out" contact_force_y)" 0.005 1e-8 || rc=1
   out=$CASE_DIR/a1000.txt
   spc "$out" 1 -options_file input/hertz2d_twobody.opts -contact_two_pass -contact_alpha 1000 -load_max_cutbacks 1 -output_dir "$CASE_DIR" -output_name a1000 -output_fields false; code=$?
-  grep -E "^(solve stalled|stopping|load step)" "$out"
+  grep -E "^(solve stalled|stopping|load step|Newton did not)" "$out"
+  assert_eq exit_code_alpha1000 "$code" 0 || rc=1
+  assert_eq stall_lines_alpha1000 "$(grep -c '^solve stalled: neither the residual .* nor the gap error .* decreased in 15 Newton iterations (-solver_stall_its)' "$out")" 1 || rc=1
+  assert_eq recovery_line "$(grep -c '^Newton did not converge: the step again with -contact_step_cap 0.1 (kept for the rest of the run)' "$out")" 1 || rc=1
+  assert_eq cutbacks_alpha1000 "$(sval "$out" cutbacks)" 0 || rc=1
+  assert_close force_alpha1000 "$(sval "$out" contact_force_y)" 0.005 1e-8 || rc=1
+  assert_le gap_error_alpha1000 "$(sval "$out" contact_gap_error)" "$(sval "$out" contact_gap_tol)" || rc=1
+  assert_le newton_alpha1000 "$(sval "$out" newton_iterations)" 60 || rc=1
+  out=$CASE_DIR/nocap.txt
+  spc "$out" 1 -options_file input/hertz2d_twobody.opts -contact_two_pass -contact_alpha 1000 -contact_step_cap 0 -load_max_cutbacks 1 -output_dir "$CASE_DIR" -output_name nocap -output_fields false; code=$?
+  grep -E "^(solve stalled|stopping|load step|Newton did not)" "$out"
   n=$(sval "$out" newton_iterations)
-  assert_eq exit_code_alpha1000 "$code" 2 || rc=1
+  assert_eq exit_code_nocap "$code" 2 || rc=1
   assert_eq stall_lines "$(grep -c '^solve stalled: neither the residual .* nor the gap error .* decreased in 15 Newton iterations (-solver_stall_its)' "$out")" 2 || rc=1
   assert_eq stalled_reason "$(grep -c 'solve did not converge (STALLED)' "$out")" 2 || rc=1
   # the stall names its cause (an active-set cycle) and what to use instead
   assert_eq cycle_lines "$(grep -c '^solve stalled: the active set changed in 15 of those iterations (an active-set cycle): with -contact_two_pass use one pass' "$out")" 2 || rc=1
+  assert_eq no_recovery "$(grep -c '^Newton did not converge' "$out")" 0 || rc=1
   assert_eq cutbacks "$(sval "$out" cutbacks)" 1 || rc=1
   assert_le newton_bounded "$n" 98 || rc=1
   return $rc
