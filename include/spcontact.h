@@ -117,6 +117,7 @@ PETSC_EXTERN PetscErrorCode SPSolverSetHistory(SPSolver, FILE *, PetscInt);
 PETSC_EXTERN PetscErrorCode SPSolverGetCounts(SPSolver, PetscInt *, PetscInt *, PetscInt *);
 PETSC_EXTERN PetscErrorCode SPSolverGetJacobianReuses(SPSolver, PetscInt *);
 PETSC_EXTERN PetscErrorCode SPSolverRecoverBreakdown(SPSolver, PetscBool *);
+PETSC_EXTERN PetscErrorCode SPSolverReorthogonalise(SPSolver);
 PETSC_EXTERN PetscBool      SPSolverReorthogonalises(SPSolver);
 PETSC_EXTERN PetscBool      SPSolverStalled(SPSolver);
 PETSC_EXTERN const char    *SPSolverReasonName(SPSolver, SNESConvergedReason);

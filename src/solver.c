@@ -608,10 +608,22 @@ PetscErrorCode SPSolverRecoverBreakdown(SPSolver s, PetscBool *retry)
   if (kr != KSP_DIVERGED_BREAKDOWN || !gmres || s->reorthogonalise) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(KSPGMRESGetCGSRefinementType(ksp, &type));
   if (type == KSP_GMRES_CGS_REFINE_ALWAYS) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(SPSolverReorthogonalise(s));
+  *retry = PETSC_TRUE;
+  PetscCall(PetscPrintf(PetscObjectComm((PetscObject)ksp), "linear solve broke down (GMRES lost the orthogonality of its basis): the step again, re-orthogonalising from now on\n"));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* GMRES re-orthogonalises every Arnoldi vector from now on (the breakdown recovery, or a restart
+   of a run in which it ran); no effect on another Krylov method */
+PetscErrorCode SPSolverReorthogonalise(SPSolver s)
+{
+  KSP ksp;
+
+  PetscFunctionBeginUser;
+  PetscCall(SNESGetKSP(s->snes, &ksp));
   PetscCall(KSPGMRESSetCGSRefinementType(ksp, KSP_GMRES_CGS_REFINE_ALWAYS));
   s->reorthogonalise = PETSC_TRUE;
-  *retry             = PETSC_TRUE;
-  PetscCall(PetscPrintf(PetscObjectComm((PetscObject)ksp), "linear solve broke down (GMRES lost the orthogonality of its basis): the step again, re-orthogonalising from now on\n"));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
