@@ -229,7 +229,8 @@ struct _n_SPContact {
   PetscInt        nob;
   SPObstacle      ob[SP_MAX_OBSTACLES];
   PetscReal       penalty, alpha, gapTol, stepCap;
-  PetscBool       capTightened; /* -contact_step_cap divided by 10 after a stalled step (once per run) */
+  PetscReal       capSaved;     /* the user's -contact_step_cap while a failed step is solved again with a tenth of it */
+  PetscInt        capRetries;   /* load steps solved again with the tighter cap */
   PetscReal       gapRtol, lengthScale; /* gapTol = gapRtol x lengthScale unless -contact_gap_tol is given */
   PetscBool       gapTolSet;
   PetscReal       mu, alphaT, creepRtol, slipRtol; /* friction (-contact_friction_*) */

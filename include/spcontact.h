@@ -80,6 +80,7 @@ PETSC_EXTERN PetscErrorCode SPContactBeginSolve(SPContact, Vec);
 PETSC_EXTERN PetscErrorCode SPContactNewtonUpdate(SPContact, Vec, PetscBool *);
 PETSC_EXTERN PetscErrorCode SPContactLimitStep(SPContact, Vec, Vec, Vec, PetscBool *);
 PETSC_EXTERN PetscErrorCode SPContactTightenStepCap(SPContact, PetscBool *);
+PETSC_EXTERN void           SPContactRestoreStepCap(SPContact);
 PETSC_EXTERN PetscErrorCode SPContactSolveUpdate(SPContact, Vec, PetscInt, PetscBool *, PetscBool *);
 PETSC_EXTERN PetscErrorCode SPContactConverged(SPContact, PetscBool *);
 PETSC_EXTERN PetscErrorCode SPContactGetStats(SPContact, SPContactStats *);

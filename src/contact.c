@@ -144,7 +144,7 @@ PetscErrorCode SPContactSetFromOptions(SPContact c)
   PetscCall(PetscOptionsReal("-contact_alpha", "Penalty factor: eps = alpha E / h, h the mean slave facet size at the point", "SPContactSetFromOptions", c->alpha, &c->alpha, NULL));
   PetscCall(PetscOptionsReal("-contact_gap_rtol", "Methods that update the shift: converged only when no point penetrates more than gap_rtol x h_c and every active point has |gap| <= gap_rtol x h_c (h_c: the smallest mean slave facet size at a contact point)", "SPContactSetFromOptions", c->gapRtol, &c->gapRtol, NULL));
   PetscCall(PetscOptionsReal("-contact_gap_tol", "Absolute gap tolerance (a length); overrides -contact_gap_rtol", "SPContactSetFromOptions", c->gapTol, &c->gapTol, &c->gapTolSet));
-  PetscCall(PetscOptionsReal("-contact_step_cap", "Newton step control: scale a step so no point penetrates deeper than step_cap x h in one step (0: off); divided by 10 once per run after a stalled load step, which is then solved again", "SPContactSetFromOptions", c->stepCap, &c->stepCap, NULL));
+  PetscCall(PetscOptionsReal("-contact_step_cap", "Newton step control: scale a step so no point penetrates deeper than step_cap x h in one step (0: off); a load step that stalls is solved again once with a tenth of it", "SPContactSetFromOptions", c->stepCap, &c->stepCap, NULL));
   PetscCall(PetscOptionsBool("-contact_safeguard", "Update the shift only of points active in both the previous and the new iterate (method.md 4.1); false only to demonstrate chatter", "SPContactSetFromOptions", c->safeguard, &c->safeguard, NULL));
   PetscCall(PetscOptionsBool("-contact_shift_settled", "In-Newton shift update only at iterations whose active set did not change (the contraction rate holds only then)", "SPContactSetFromOptions", c->settled, &c->settled, NULL));
   PetscCall(PetscOptionsEList("-contact_tangent", "Second variation of the gap in the tangent (obstacle curvature; pair projection and normal variation): auto (once a Newton iteration left the active set unchanged), full (always: the consistent tangent), frozen (never)", "SPContactSetFromOptions", Tangents, 3, Tangents[tangent], &tangent, NULL));
@@ -391,7 +391,7 @@ static PetscErrorCode ViewSetUp(SPContact c, PetscViewer v)
   PetscCall(PetscViewerASCIIPrintf(v, "contact_pairs %" PetscInt_FMT "\ncontact_two_pass %s\n", c->nuser, c->twoPass ? "yes" : "no"));
   PetscCall(PetscViewerASCIIPrintf(v, "contact_master_facets %" PetscInt_FMT "\n", c->nmfAll));
   PetscCall(PetscViewerASCIIPrintf(v, "contact_evaluations %" PetscInt_FMT "\ncontact_limited_steps %" PetscInt_FMT "\ncontact_shift_updates %" PetscInt_FMT "\n", evals, c->stepLimits, c->shiftUpdates));
-  PetscCall(PetscViewerASCIIPrintf(v, "contact_step_cap %g\n", (double)c->stepCap));
+  PetscCall(PetscViewerASCIIPrintf(v, "contact_step_cap_retries %" PetscInt_FMT "\n", c->capRetries));
   PetscCall(PetscViewerASCIIPrintf(v, "contact_exchanges %" PetscInt_FMT "\ncontact_exchange_time %.6f\n", c->exchanges, (double)tmax));
   PetscCall(PetscViewerASCIIPrintf(v, "contact_exchange_facets_per_rank %.1f\n", c->exchanges ? (double)rec / (double)(c->exchanges * size) : 0.0));
   PetscCall(PetscViewerASCIIPrintf(v, "contact_pattern_rebuilds %" PetscInt_FMT "\n", c->rebuilds));

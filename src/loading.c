@@ -37,8 +37,8 @@ static PetscErrorCode SolveStep(SPApp app, PetscReal load, PetscInt step, Vec ub
   PetscCall(SPOutputGetHistoryFile(app->output, &fp));
   PetscCall(SPSolverSetHistory(app->solver, fp, step));
   PetscCall(SolveAndUpdate(app, &reason));
-  for (PetscInt k = 0; k < 2 && reason < 0; ++k) { /* the recoveries, each once per run: the same */
-    PetscBool retry = PETSC_FALSE;                  /* step again from its start, no cut-back */
+  for (PetscInt k = 0; k < 2 && reason < 0; ++k) { /* the recoveries (the GMRES one once per run, the */
+    PetscBool retry = PETSC_FALSE;                  /* step cap once per step): the step again, no cut-back */
     if (reason == SNES_DIVERGED_LINEAR_SOLVE) PetscCall(SPSolverRecoverBreakdown(app->solver, &retry));
     else if (SPSolverStalled(app->solver) || reason == SNES_DIVERGED_MAX_IT) PetscCall(SPContactTightenStepCap(app->contact, &retry));
     if (!retry) break;
@@ -46,6 +46,7 @@ static PetscErrorCode SolveStep(SPApp app, PetscReal load, PetscInt step, Vec ub
     PetscCall(SPContactRestoreState(app->contact));
     PetscCall(SolveAndUpdate(app, &reason));
   }
+  SPContactRestoreStepCap(app->contact);
   *ok = reason > 0 ? PETSC_TRUE : PETSC_FALSE;
   if (!*ok) {
     PetscCall(PetscPrintf(app->comm, "load step %" PetscInt_FMT " (load factor %g): solve did not converge (%s)\n", step, (double)load, SPSolverReasonName(app->solver, reason)));

@@ -89,7 +89,7 @@ test_units_cutback_floor() {
 # curved non-matching interface the two passes cannot close every gap of both surfaces at once,
 # the shifts of the two sides compete for the same points, and one h of new penetration per
 # Newton step (the default -contact_step_cap 1) is far more than the penetration at this penalty.
-# The recovery then solves the step again with the cap at 0.1 (once per run, one line) and it
+# The recovery then solves the step again with the cap at 0.1 (once per step, one line) and it
 # converges without a cut-back: the force to 1e-8, 51 Newton iterations (15 of them stalled).
 # Without the step control (-contact_step_cap 0: no recovery either) both solves stall, the
 # cut-back budget ends the run, exit 2, before -snes_max_it (50) each.
@@ -105,7 +105,8 @@ test_units_twopass_stall() {
   grep -E "^(solve stalled|stopping|load step|Newton did not)" "$out"
   assert_eq exit_code_alpha1000 "$code" 0 || rc=1
   assert_eq stall_lines_alpha1000 "$(grep -c '^solve stalled: neither the residual .* nor the gap error .* decreased in 15 Newton iterations (-solver_stall_its)' "$out")" 1 || rc=1
-  assert_eq recovery_line "$(grep -c '^Newton did not converge: the step again with -contact_step_cap 0.1 (kept for the rest of the run)' "$out")" 1 || rc=1
+  assert_eq recovery_line "$(grep -c '^Newton did not converge: the load step again with -contact_step_cap 0.1 for this step' "$out")" 1 || rc=1
+  assert_eq step_cap_retries "$(sval "$out" contact_step_cap_retries)" 1 || rc=1
   assert_eq cutbacks_alpha1000 "$(sval "$out" cutbacks)" 0 || rc=1
   assert_close force_alpha1000 "$(sval "$out" contact_force_y)" 0.005 1e-8 || rc=1
   assert_le gap_error_alpha1000 "$(sval "$out" contact_gap_error)" "$(sval "$out" contact_gap_tol)" || rc=1

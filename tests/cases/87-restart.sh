@@ -53,7 +53,7 @@ rs_case() {
   assert_eq "restarted run status" "$(sval "$CASE_DIR/rest.txt" status) $(rs_h5 "$CASE_DIR/rest.h5" | cut -d' ' -f1-2)" "complete complete 10" || rc=1
   assert_eq "restarted file: first step, slabs" "$("$PYTHON" -c "import h5py; f = h5py.File('$CASE_DIR/rest.h5', 'r'); print(f.attrs['first_step'], f['/vertex_fields/displacement_Field_0'].shape[0])")" "6 5" || rc=1
   same_summary "$CASE_DIR/full.txt" "$CASE_DIR/rest.txt" 1e-10 load_factor load_steps newton_iterations displacement_max \
-    contact_active_points contact_max_penetration contact_gap_error contact_force_x contact_force_y contact_peak_pressure contact_radius contact_step_cap || rc=1
+    contact_active_points contact_max_penetration contact_gap_error contact_force_x contact_force_y contact_peak_pressure contact_radius contact_step_cap_retries || rc=1
   if [ "$(sval "$CASE_DIR/full.txt" contact_friction)" = yes ]; then
     same_summary "$CASE_DIR/full.txt" "$CASE_DIR/rest.txt" 1e-10 contact_stick_points contact_slip_points contact_max_stick_creep contact_tangential_force_x || rc=1
   fi
@@ -63,11 +63,11 @@ rs_case() {
 
 test_restart_b2_shifted()         { rs_case 1 -options_file input/hertz2d.opts -contact_method shifted; }
 # A run whose first step failed (two-pass B6 at alpha 1000 in 10 steps: step 1 takes 23 Newton
-# iterations, -snes_max_it 20 stops it) and was solved again with the step cap at 0.1: the restart
-# keeps the tightened cap, so the remaining steps are the same
+# iterations, -snes_max_it 20 stops it) and was solved again with the step cap at 0.1 for that
+# step: the restart carries the retry count and the remaining steps are the same
 test_restart_after_step_cap_recovery() {
   rs_case 1 -options_file input/hertz2d_twobody.opts -contact_two_pass -contact_alpha 1000 -snes_max_it 20 || return 1
-  assert_eq recovery_in_first_half "$(grep -c '^Newton did not converge: the step again' "$CASE_DIR/half.txt")" 1 || return 1
+  assert_eq recovery_in_first_half "$(grep -c '^Newton did not converge: the load step again' "$CASE_DIR/half.txt")" 1 || return 1
   assert_eq no_recovery_after_restart "$(grep -c '^Newton did not converge' "$CASE_DIR/rest.txt")" 0
 }
 test_restart_b2_shifted_np2()     { rs_case 2 -options_file input/hertz2d.opts -contact_method shifted; }
