@@ -391,7 +391,8 @@ static PetscErrorCode ViewSetUp(SPContact c, PetscViewer v)
   PetscCall(PetscViewerASCIIPrintf(v, "contact_pairs %" PetscInt_FMT "\ncontact_two_pass %s\n", c->nuser, c->twoPass ? "yes" : "no"));
   PetscCall(PetscViewerASCIIPrintf(v, "contact_master_facets %" PetscInt_FMT "\n", c->nmfAll));
   PetscCall(PetscViewerASCIIPrintf(v, "contact_evaluations %" PetscInt_FMT "\ncontact_limited_steps %" PetscInt_FMT "\ncontact_shift_updates %" PetscInt_FMT "\n", evals, c->stepLimits, c->shiftUpdates));
-  PetscCall(PetscViewerASCIIPrintf(v, "contact_step_cap_retries %" PetscInt_FMT "\n", c->capRetries));
+  /* not contact_step_*: lines that start with contact_step are the per-step reports */
+  PetscCall(PetscViewerASCIIPrintf(v, "contact_retries_step_cap %" PetscInt_FMT "\n", c->capRetries));
   PetscCall(PetscViewerASCIIPrintf(v, "contact_exchanges %" PetscInt_FMT "\ncontact_exchange_time %.6f\n", c->exchanges, (double)tmax));
   PetscCall(PetscViewerASCIIPrintf(v, "contact_exchange_facets_per_rank %.1f\n", c->exchanges ? (double)rec / (double)(c->exchanges * size) : 0.0));
   PetscCall(PetscViewerASCIIPrintf(v, "contact_pattern_rebuilds %" PetscInt_FMT "\n", c->rebuilds));

@@ -53,7 +53,7 @@ rs_case() {
   assert_eq "restarted run status" "$(sval "$CASE_DIR/rest.txt" status) $(rs_h5 "$CASE_DIR/rest.h5" | cut -d' ' -f1-2)" "complete complete 10" || rc=1
   assert_eq "restarted file: first step, slabs" "$("$PYTHON" -c "import h5py; f = h5py.File('$CASE_DIR/rest.h5', 'r'); print(f.attrs['first_step'], f['/vertex_fields/displacement_Field_0'].shape[0])")" "6 5" || rc=1
   same_summary "$CASE_DIR/full.txt" "$CASE_DIR/rest.txt" 1e-10 load_factor load_steps newton_iterations displacement_max \
-    contact_active_points contact_max_penetration contact_gap_error contact_force_x contact_force_y contact_peak_pressure contact_radius contact_step_cap_retries || rc=1
+    contact_active_points contact_max_penetration contact_gap_error contact_force_x contact_force_y contact_peak_pressure contact_radius contact_retries_step_cap || rc=1
   if [ "$(sval "$CASE_DIR/full.txt" contact_friction)" = yes ]; then
     same_summary "$CASE_DIR/full.txt" "$CASE_DIR/rest.txt" 1e-10 contact_stick_points contact_slip_points contact_max_stick_creep contact_tangential_force_x || rc=1
   fi
