@@ -126,6 +126,27 @@ test_units_twopass_stall() {
   return $rc
 }
 
+# The step-cap retry on 1, 2 and 3 ranks: B6 (one pass) at alpha 1000 stalls in its first Newton
+# solve (an active-set cycle) and converges when the step is solved again with the cap at 0.1: one
+# retry, no cut-back, the force to 1e-8, the same figures on every rank count (41 Newton
+# iterations each; 146 and 3 cut-backs before the retry existed)
+test_units_step_cap_retry_ranks() {
+  local rc=0
+  for np in 1 2 3; do
+    local out=$CASE_DIR/np$np.txt
+    spc "$out" "$np" -options_file input/hertz2d_twobody.opts -contact_alpha 1000 -output_dir "$CASE_DIR" -output_name "np$np" -output_fields false || return 1
+    assert_eq "converged_np$np" "$(sval "$out" converged)" yes || rc=1
+    assert_eq "cutbacks_np$np" "$(sval "$out" cutbacks)" 0 || rc=1
+    assert_eq "retries_np$np" "$(sval "$out" contact_retries_step_cap)" 1 || rc=1
+    assert_close "force_np$np" "$(sval "$out" contact_force_y)" 0.005 1e-8 || rc=1
+    assert_le "newton_np$np" "$(sval "$out" newton_iterations)" 50 || rc=1
+  done
+  for np in 2 3; do
+    same_summary "$CASE_DIR/np1.txt" "$CASE_DIR/np$np.txt" 1e-8 contact_force_y contact_peak_pressure contact_active_points displacement_max || rc=1
+  done
+  return $rc
+}
+
 # Wall time: a limit already passed when the first load step would start stops the run there with
 # one line, exit 2, no step done (no timing is asserted: any setup takes longer than 1 microsecond)
 test_units_wall_time() {
