@@ -252,7 +252,6 @@ static PetscErrorCode MarkFreeSides(SPContact c)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Every pair's label and values exist and are not empty */
 /* The slave and master surfaces of pair k share no vertex: a shared vertex would face a master
    facet that contains it (self-contact, not supported), and the solve would fail for no reason
    the user could see */
@@ -280,6 +279,7 @@ static PetscErrorCode CheckDisjoint(SPContact c, PetscInt k)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Every pair's label and values exist and are not empty, and its two surfaces are disjoint */
 PetscErrorCode SPContactPairsCheckLabels(SPContact c)
 {
   PetscFunctionBeginUser;

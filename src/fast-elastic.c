@@ -220,8 +220,9 @@ static void CellNonlinear(SPFastElastic f, PetscInt c, const PetscScalar u[], Pe
         for (PetscInt J = 0; J < dim; ++J) r[a * dim + i] += wdetJ[q] * P[i * dim + J] * Gq[a * dim + J];
     if (!K) continue;
     f->law->tangent(dim, param, ux, A);
-    if (dim == 3 && nb == 8) AddTangent(3, 8, Gq, wdetJ[q], A, K); /* Q1 hex, P1 tet: */
-    else if (dim == 3 && nb == 4) AddTangent(3, 4, Gq, wdetJ[q], A, K); /* constant trip counts */
+    /* Q1 hexes and P1 tets with constant trip counts (the compiler unrolls the loops) */
+    if (dim == 3 && nb == 8) AddTangent(3, 8, Gq, wdetJ[q], A, K);
+    else if (dim == 3 && nb == 4) AddTangent(3, 4, Gq, wdetJ[q], A, K);
     else AddTangent(dim, nb, Gq, wdetJ[q], A, K);
   }
   if (K) MirrorTangent(dim, nb, K);

@@ -16,7 +16,7 @@
 #include <hdf5.h>
 #include <stdlib.h>
 
-#define NCOUNT 24 /* reals per rank in /restart/counters */
+#define NCOUNT 23 /* reals per rank in /restart/counters */
 
 /* A plain (DM-less) copy of the layout of n local reals with block size bs: VecView writes it raw */
 static PetscErrorCode PlainVec(MPI_Comm comm, PetscInt n, PetscInt bs, const char name[], Vec *v)
@@ -35,7 +35,7 @@ static void Counters(PetscBool pack, SPApp a, PetscReal *inc, PetscReal b[])
 {
   SPSolver  s = a->solver;
   SPContact c = a->contact;
-  PetscReal v[NCOUNT] = {a->loadReached, *inc, (PetscReal)a->stepsDone, (PetscReal)a->cutbacks, (PetscReal)s->newtonTotal, (PetscReal)s->linearTotal, (PetscReal)s->funcTotal, (PetscReal)c->evaluations, (PetscReal)c->stepLimits, (PetscReal)c->shiftUpdates, (PetscReal)c->exchanges, (PetscReal)c->received, (PetscReal)c->rebuilds, (PetscReal)c->stats.augmentations, (PetscReal)c->centreSet, c->centre[0], c->centre[1], c->centre[2], (PetscReal)c->exchangeTime, s->fscale, (PetscReal)a->streak, (PetscReal)c->capRetries, 0.0, (PetscReal)s->reorthogonalise};
+  PetscReal v[NCOUNT] = {a->loadReached, *inc, (PetscReal)a->stepsDone, (PetscReal)a->cutbacks, (PetscReal)s->newtonTotal, (PetscReal)s->linearTotal, (PetscReal)s->funcTotal, (PetscReal)c->evaluations, (PetscReal)c->stepLimits, (PetscReal)c->shiftUpdates, (PetscReal)c->exchanges, (PetscReal)c->received, (PetscReal)c->rebuilds, (PetscReal)c->stats.augmentations, (PetscReal)c->centreSet, c->centre[0], c->centre[1], c->centre[2], (PetscReal)c->exchangeTime, s->fscale, (PetscReal)a->streak, (PetscReal)c->capRetries, (PetscReal)s->reorthogonalise};
 
   if (pack) {
     for (PetscInt k = 0; k < NCOUNT; ++k) b[k] = v[k];
@@ -50,8 +50,8 @@ static void Counters(PetscBool pack, SPApp a, PetscReal *inc, PetscReal b[])
   c->exchangeTime = b[18];
   s->fscale       = b[19]; /* the residual tolerance's scale: the largest initial |F| of the run */
   a->streak       = (PetscInt)b[20]; /* converged steps since the last cut-back or growth */
-  c->capRetries      = (PetscInt)b[21]; /* steps solved again with a tighter step cap; b[22] spare */
-  s->reorthogonalise = b[23] != 0.0 ? PETSC_TRUE : PETSC_FALSE; /* applied by LoadCounters */
+  c->capRetries      = (PetscInt)b[21]; /* steps solved again with a tighter step cap */
+  s->reorthogonalise = b[22] != 0.0 ? PETSC_TRUE : PETSC_FALSE; /* applied by LoadCounters */
 }
 
 /* The run's identity, as attributes of /restart: written with the first step, compared on restart */
