@@ -435,6 +435,14 @@ PetscErrorCode SPContactGetShiftContraction(SPContact c, PetscReal *rho)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Whether the method updates the shifts at the Newton-iteration boundary (shifted) */
+PetscErrorCode SPContactShiftsInNewton(SPContact c, PetscBool *on)
+{
+  PetscFunctionBeginUser;
+  *on = c && c->enabled && c->method->timing == SP_UPDATE_NEWTON ? PETSC_TRUE : PETSC_FALSE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode SPContactHasFriction(SPContact c, PetscBool *on)
 {
   PetscFunctionBeginUser;

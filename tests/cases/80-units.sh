@@ -126,6 +126,36 @@ test_units_twopass_stall() {
   return $rc
 }
 
+# Two-pass at alpha 10 (issue 12): the two passes' redundant constraints make the plain shift
+# update contract by about 0.92 per iteration, so the plain rule reaches -snes_max_it in every
+# solve (unbounded before the cut-back budget: 3029 Newton iterations and 20 cut-backs, exit 2).
+# With -contact_two_pass the shifted method defaults to Anderson acceleration, which converges in
+# one step: 44 Newton iterations, the force to 1e-8, the same on 1 and 2 ranks. The plain rule,
+# asked for, still ends within the budget (-load_max_cutbacks 1: 4 solves of -snes_max_it 50).
+test_units_twopass_alpha10() {
+  local rc=0 np out code
+  for np in 1 2; do
+    out=$CASE_DIR/np$np.txt
+    spc "$out" $np -options_file input/hertz2d_twobody.opts -contact_two_pass -contact_alpha 10 -output_dir "$CASE_DIR" -output_name np$np -output_fields false || return 1
+    echo "np $np: newton $(sval "$out" newton_iterations) accel $(sval "$out" contact_shift_accel) steps $(sval "$out" contact_shift_accel_steps) force $(sval "$out" contact_force_y)"
+    assert_eq "converged_np$np" "$(sval "$out" converged)" yes || rc=1
+    assert_eq "accel_default_np$np" "$(sval "$out" contact_shift_accel)" anderson || rc=1
+    assert_eq "cutbacks_np$np" "$(sval "$out" cutbacks)" 0 || rc=1
+    assert_le "newton_np$np" "$(sval "$out" newton_iterations)" 50 || rc=1
+    assert_close "force_np$np" "$(sval "$out" contact_force_y)" 0.005 1e-8 || rc=1
+    assert_le "gap_error_np$np" "$(sval "$out" contact_gap_error)" "$(sval "$out" contact_gap_tol)" || rc=1
+  done
+  SAME_ATOL=1e-12 same_summary "$CASE_DIR/np1.txt" "$CASE_DIR/np2.txt" 1e-8 contact_force_y contact_peak_pressure || rc=1
+  out=$CASE_DIR/plain.txt
+  spc "$out" 1 -options_file input/hertz2d_twobody.opts -contact_two_pass -contact_alpha 10 -contact_shift_accel none -load_max_cutbacks 1 -output_dir "$CASE_DIR" -output_name plain -output_fields false; code=$?
+  grep -E "^(stopping|load step)" "$out"
+  assert_eq exit_code_plain "$code" 2 || rc=1
+  assert_eq accel_plain "$(sval "$out" contact_shift_accel)" none || rc=1
+  assert_le newton_plain_bounded "$(sval "$out" newton_iterations)" 200 || rc=1
+  assert_eq budget_line_plain "$(grep -c '^stopping: .*cut-back budget spent (1 cut-backs, -load_max_cutbacks)' "$out")" 1 || rc=1
+  return $rc
+}
+
 # The step-cap retry on 1, 2 and 3 ranks: B6 (one pass) at alpha 1000 stalls in its first Newton
 # solve (an active-set cycle) and converges when the step is solved again with the cap at 0.1: one
 # retry, no cut-back, the force to 1e-8, the same figures on every rank count (41 Newton
