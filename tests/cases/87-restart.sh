@@ -52,7 +52,12 @@ rs_case() {
   assert_eq "restarted on" "$(sval "$CASE_DIR/rest.txt" ranks) ranks" "$np2 ranks" || rc=1
   assert_eq "restarted run status" "$(sval "$CASE_DIR/rest.txt" status) $(rs_h5 "$CASE_DIR/rest.h5" | cut -d' ' -f1-2)" "complete complete 10" || rc=1
   assert_eq "restarted file: first step, slabs" "$("$PYTHON" -c "import h5py; f = h5py.File('$CASE_DIR/rest.h5', 'r'); print(f.attrs['first_step'], f['/vertex_fields/displacement_Field_0'].shape[0])")" "6 5" || rc=1
-  same_summary "$CASE_DIR/full.txt" "$CASE_DIR/rest.txt" 1e-10 load_factor load_steps newton_iterations displacement_max \
+  # the Newton count is the same on the same rank count; on another one the partition changes the
+  # rounding of reductions and a solve near its tolerance may take one iteration more or less
+  # (two-pass F4 3 -> 1 with the Anderson update: 83 to 86)
+  if [ "$np2" = "$np" ]; then same_summary "$CASE_DIR/full.txt" "$CASE_DIR/rest.txt" 0 newton_iterations || rc=1
+  else assert_close "newton_iterations (another rank count: +-1)" "$(sval "$CASE_DIR/rest.txt" newton_iterations)" "$(sval "$CASE_DIR/full.txt" newton_iterations)" 0 1 || rc=1; fi
+  same_summary "$CASE_DIR/full.txt" "$CASE_DIR/rest.txt" 1e-10 load_factor load_steps displacement_max \
     contact_active_points contact_max_penetration contact_gap_error contact_force_x contact_force_y contact_peak_pressure contact_radius contact_retries_step_cap || rc=1
   if [ "$(sval "$CASE_DIR/full.txt" contact_friction)" = yes ]; then
     same_summary "$CASE_DIR/full.txt" "$CASE_DIR/rest.txt" 1e-10 contact_stick_points contact_slip_points contact_max_stick_creep contact_tangential_force_x || rc=1
@@ -78,8 +83,11 @@ test_restart_friction_slide_shifted_np2() { rs_case 2 -options_file input/fricti
 # the friction anchors on master facets by the facets' serial numbers. B2 interrupted on 1 rank,
 # resumed on 2; the frictional two-pass patch F4 (anchors on pair facets) 1 -> 3 and 3 -> 1.
 test_restart_b2_shifted_1to2()    { RS_NP=2 rs_case 1 -options_file input/hertz2d.opts -contact_method shifted; }
-test_restart_friction_patch_1to3() { RS_NP=3 rs_case 1 -options_file input/friction_patch_4_5.opts; }
-test_restart_friction_patch_3to1() { RS_NP=1 rs_case 3 -options_file input/friction_patch_4_5.opts; }
+# The plain shift update here: on 3 ranks the assembly adds off-rank contributions in message
+# arrival order, so a run differs from the next at round-off (forces at 1e-11), and with the
+# two-pass default (Anderson) F4 in 10 steps then takes 83 to 85 Newton iterations from run to run.
+test_restart_friction_patch_1to3() { RS_NP=3 rs_case 1 -options_file input/friction_patch_4_5.opts -contact_shift_accel none; }
+test_restart_friction_patch_3to1() { RS_NP=1 rs_case 3 -options_file input/friction_patch_4_5.opts -contact_shift_accel none; }
 
 # rs_kill SIG CODE: a real signal from outside (1 rank, no launcher): the run stops after the step
 # it is in, exits with CODE (128 + signal), the file says interrupted and holds that many steps
