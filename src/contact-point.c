@@ -306,6 +306,8 @@ PetscErrorCode SPContactSaveState(SPContact c)
   PetscFunctionBeginUser;
   if (!c->enabled) PetscFunctionReturn(PETSC_SUCCESS);
   for (PetscInt i = 0; i < c->n; ++i) c->saved[i] = c->pt[i].st;
+  PetscCall(SPShiftAccelReset(c->accel)); /* a new load step: a new map */
+  PetscCall(SPShiftAccelReset(c->accelT));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -319,6 +321,7 @@ PetscErrorCode SPContactRestoreState(SPContact c)
     c->nhist[i]               = 0;
   }
   PetscCall(SPShiftAccelReset(c->accel));
+  PetscCall(SPShiftAccelReset(c->accelT));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

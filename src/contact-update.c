@@ -65,8 +65,10 @@ PetscErrorCode SPContactBeginSolve(SPContact c, Vec X)
   PetscCall(Bookkeep(c, 0.0, PETSC_FALSE));
   c->setSettled = PETSC_FALSE;
   for (PetscInt i = 0; i < c->n; ++i) c->nhist[i] = 0;
-  PetscCall(SPShiftAccelReset(c->accel));
-  PetscCall(SPShiftAccelReset(c->accelT));
+  if (c->method->timing == SP_UPDATE_NEWTON) { /* alm's history spans the augmentations of a step (SPContactSaveState) */
+    PetscCall(SPShiftAccelReset(c->accel));
+    PetscCall(SPShiftAccelReset(c->accelT));
+  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -130,28 +132,43 @@ static PetscErrorCode ShiftUpdateApplies(SPContact c, PetscBool *applies, PetscB
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Every point's shift at an applying boundary: the method's rule per point, then, with an
-   accelerator, its step over the points the rule updated (clipped to s <= 0 like the rule) */
-static PetscErrorCode UpdateShifts(SPContact c, PetscReal *maxDs)
+/* With an accelerator, its step over the points the rule updated (c->accIn), from the shifts
+   before the update (c->accS), clipped to s <= 0 like the rule; *maxDs becomes its largest change */
+static PetscErrorCode Accelerate(SPContact c, PetscReal *maxDs)
 {
   PetscBool used = PETSC_FALSE;
-  PetscReal *old = c->accS;
 
+  PetscFunctionBeginUser;
+  if (!c->accel) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(SPShiftAccelUpdate(c->accel, c->accIn, c->accS, c->accG, c->accNew, &used));
+  if (!used) PetscFunctionReturn(PETSC_SUCCESS);
+  *maxDs = 0.0;
+  for (PetscInt i = 0; i < c->n; ++i) {
+    if (c->accIn[i]) c->pt[i].st.sN = PetscMin(0.0, c->accNew[i]);
+    *maxDs = PetscMax(*maxDs, PetscAbsReal(c->pt[i].st.sN - c->accS[i]));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Point i's shift went from s to its rule's value (rule: the rule applied): the accelerator's record */
+static void Record(SPContact c, PetscInt i, PetscReal s, PetscBool rule)
+{
+  if (!c->accel) return;
+  c->accS[i] = s, c->accG[i] = c->pt[i].geo.gap, c->accIn[i] = rule, c->accNew[i] = c->pt[i].st.sN;
+}
+
+/* Every point's shift at an applying boundary: the method's rule per point, then the accelerator */
+static PetscErrorCode UpdateShifts(SPContact c, PetscReal *maxDs)
+{
   PetscFunctionBeginUser;
   for (PetscInt i = 0; i < c->n; ++i) {
     PetscBool       rule;
     const PetscReal s = c->pt[i].st.sN;
     c->pt[i].st.sN    = UpdatePoint(c, i, &rule);
     *maxDs            = PetscMax(*maxDs, PetscAbsReal(c->pt[i].st.sN - s));
-    if (c->accel) old[i] = s, c->accG[i] = c->pt[i].geo.gap, c->accIn[i] = rule, c->accNew[i] = c->pt[i].st.sN;
+    Record(c, i, s, rule);
   }
-  if (c->accel) PetscCall(SPShiftAccelUpdate(c->accel, c->accIn, old, c->accG, c->accNew, &used));
-  if (!used) PetscFunctionReturn(PETSC_SUCCESS);
-  *maxDs = 0.0;
-  for (PetscInt i = 0; i < c->n; ++i) {
-    if (c->accIn[i]) c->pt[i].st.sN = PetscMin(0.0, c->accNew[i]);
-    *maxDs = PetscMax(*maxDs, PetscAbsReal(c->pt[i].st.sN - old[i]));
-  }
+  PetscCall(Accelerate(c, maxDs));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -171,13 +188,13 @@ PetscErrorCode SPContactNewtonUpdate(SPContact c, Vec W, PetscBool *changed)
   c->slipLimited = PETSC_FALSE;
 
   if (applies) PetscCall(UpdateShifts(c, &maxDs));
-  else PetscCall(SPShiftAccelReset(c->accel)); /* the active set moved (or the gaps hold): a new map */
+  else if (c->method->timing == SP_UPDATE_NEWTON) PetscCall(SPShiftAccelReset(c->accel)); /* the active set moved (or the gaps hold): a new map */
   if (settled && c->method->timing == SP_UPDATE_NEWTON) { /* the tangential shift, after the normal one */
     PetscCall(SPFrictionSettled(c, &fsettled));
     fupdate = fsettled || !c->settled ? PETSC_TRUE : PETSC_FALSE;
   }
   if (fupdate) PetscCall(SPFrictionUpdate(c, &dsT));
-  else PetscCall(SPShiftAccelReset(c->accelT)); /* the stick/slip set moved: a new map */
+  else if (c->method->timing == SP_UPDATE_NEWTON) PetscCall(SPShiftAccelReset(c->accelT)); /* the stick/slip set moved: a new map */
   PetscCall(Bookkeep(c, maxDs, PETSC_TRUE));
   c->setSettled = c->stats.activeChanged == 0 ? PETSC_TRUE : PETSC_FALSE;
   PetscCallMPI(MPI_Allreduce(&maxDs, &all, 1, MPIU_REAL, MPI_MAX, PetscObjectComm((PetscObject)c->dm)));
@@ -278,7 +295,9 @@ PetscErrorCode SPContactSolveUpdate(SPContact c, Vec X, PetscInt done, PetscBool
     const PetscReal old = st->sN, g = c->pt[i].geo.gap;
     st->sN              = PetscMin(0.0, c->method->update(1, &old, &g));
     maxDs               = PetscMax(maxDs, PetscAbsReal(st->sN - old));
+    Record(c, i, old, SPContactPointActive(c, i));
   }
+  if (!doneN) PetscCall(Accelerate(c, &maxDs)); /* across the augmentations of the load step */
   PetscCall(SPFrictionUpdate(c, &dsT));
   if (doneN && creepOK && c->stats.maxSlipShiftChange <= c->slipRtol) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(Bookkeep(c, maxDs, PETSC_FALSE));
