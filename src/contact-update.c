@@ -57,6 +57,15 @@ static PetscErrorCode Bookkeep(SPContact c, PetscReal maxDs, PetscBool compare)
 }
 
 /* Before a Newton solve: active set of the initial iterate (it drives the first Jacobian) */
+/* An accelerator of the in-Newton update starts a new history at a new solve and whenever its
+   set of points moves; alm's spans the augmentations of a load step (SPContactSaveState resets it) */
+static PetscErrorCode ResetInNewton(SPContact c, SPShiftAccel a)
+{
+  PetscFunctionBeginUser;
+  if (c->method->timing == SP_UPDATE_NEWTON) PetscCall(SPShiftAccelReset(a));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode SPContactBeginSolve(SPContact c, Vec X)
 {
   PetscFunctionBeginUser;
@@ -65,10 +74,8 @@ PetscErrorCode SPContactBeginSolve(SPContact c, Vec X)
   PetscCall(Bookkeep(c, 0.0, PETSC_FALSE));
   c->setSettled = PETSC_FALSE;
   for (PetscInt i = 0; i < c->n; ++i) c->nhist[i] = 0;
-  if (c->method->timing == SP_UPDATE_NEWTON) { /* alm's history spans the augmentations of a step (SPContactSaveState) */
-    PetscCall(SPShiftAccelReset(c->accel));
-    PetscCall(SPShiftAccelReset(c->accelT));
-  }
+  PetscCall(ResetInNewton(c, c->accel));
+  PetscCall(ResetInNewton(c, c->accelT));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -188,13 +195,13 @@ PetscErrorCode SPContactNewtonUpdate(SPContact c, Vec W, PetscBool *changed)
   c->slipLimited = PETSC_FALSE;
 
   if (applies) PetscCall(UpdateShifts(c, &maxDs));
-  else if (c->method->timing == SP_UPDATE_NEWTON) PetscCall(SPShiftAccelReset(c->accel)); /* the active set moved (or the gaps hold): a new map */
+  else PetscCall(ResetInNewton(c, c->accel)); /* the active set moved (or the gaps hold): a new map */
   if (settled && c->method->timing == SP_UPDATE_NEWTON) { /* the tangential shift, after the normal one */
     PetscCall(SPFrictionSettled(c, &fsettled));
     fupdate = fsettled || !c->settled ? PETSC_TRUE : PETSC_FALSE;
   }
   if (fupdate) PetscCall(SPFrictionUpdate(c, &dsT));
-  else if (c->method->timing == SP_UPDATE_NEWTON) PetscCall(SPShiftAccelReset(c->accelT)); /* the stick/slip set moved: a new map */
+  else PetscCall(ResetInNewton(c, c->accelT)); /* the stick/slip set moved: a new map */
   PetscCall(Bookkeep(c, maxDs, PETSC_TRUE));
   c->setSettled = c->stats.activeChanged == 0 ? PETSC_TRUE : PETSC_FALSE;
   PetscCallMPI(MPI_Allreduce(&maxDs, &all, 1, MPIU_REAL, MPI_MAX, PetscObjectComm((PetscObject)c->dm)));
