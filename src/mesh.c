@@ -135,43 +135,160 @@ PetscErrorCode SPMeshGetSerialNumbers(DM dm, const PetscInt **sid)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Every cell must have a positive Jacobian determinant at its quadrature points (tensor cells:
-   2^dim Gauss points; simplices: affine) and not be flat: detJ / prod_k |J e_k| (1 for a square,
-   0 for a flat cell; scale-free) above 1e-8. One line otherwise. */
+/* detJ of a dim x dim Jacobian J_ik = dx_i/dxi_k and its scale-free shape detJ / prod_k |J e_k|
+   (1 for a square, 0 for a flat cell) */
+static void JacobianShape(PetscInt dim, const PetscReal J[], PetscReal *detJ, PetscReal *shape)
+{
+  PetscReal cols = 1.0;
+
+  for (PetscInt k = 0; k < dim; ++k) {
+    PetscReal n2 = 0.0;
+    for (PetscInt i = 0; i < dim; ++i) n2 += PetscSqr(J[i * dim + k]);
+    cols *= PetscSqrtReal(n2);
+  }
+  if (dim == 1) *detJ = J[0];
+  else if (dim == 2) *detJ = J[0] * J[3] - J[1] * J[2];
+  else *detJ = J[0] * (J[4] * J[8] - J[5] * J[7]) - J[1] * (J[3] * J[8] - J[5] * J[6]) + J[2] * (J[3] * J[7] - J[4] * J[6]);
+  *shape = cols > 0.0 ? *detJ / cols : 0.0;
+}
+
+/* Where a cell of type ct is checked: tensor cells at their 2^dim Gauss points, simplices (affine)
+   at the reference centroid */
+static PetscErrorCode CheckPoints(PetscInt dim, DMPolytopeType ct, PetscQuadrature *q)
+{
+  PetscReal *x, *w;
+
+  PetscFunctionBeginUser;
+  if (ct == DM_POLYTOPE_QUADRILATERAL || ct == DM_POLYTOPE_HEXAHEDRON) {
+    PetscCall(PetscDTGaussTensorQuadrature(dim, 1, 2, -1.0, 1.0, q));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  PetscCall(PetscMalloc1(dim, &x));
+  PetscCall(PetscMalloc1(1, &w));
+  for (PetscInt d = 0; d < dim; ++d) x[d] = -1.0 + 2.0 / (dim + 1);
+  w[0] = 1.0;
+  PetscCall(PetscQuadratureCreate(PETSC_COMM_SELF, q));
+  PetscCall(PetscQuadratureSetData(*q, dim, 1, 1, x, w));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The coordinate field's tabulation at q, once for all cells, when the coordinates are a PetscFE
+   of dimension dim on cells of one type (NULL otherwise: the caller asks PETSc per cell, which
+   tabulates per cell and cost 20 s of setup at 1e6 dofs) */
+static PetscErrorCode CoordinateTabulation(DM dm, PetscQuadrature q, PetscTabulation *T)
+{
+  DM             cdm;
+  PetscObject    disc = NULL;
+  PetscClassId   id = 0;
+  PetscInt       dim, cdim, np, cStart, cEnd, mixed = 0;
+  DMPolytopeType ct0, ct;
+  const PetscReal *pts;
+
+  PetscFunctionBeginUser;
+  *T = NULL;
+  PetscCall(DMGetDimension(dm, &dim));
+  PetscCall(DMGetCoordinateDim(dm, &cdim));
+  PetscCall(DMGetCoordinateDM(dm, &cdm));
+  PetscCall(DMGetNumFields(cdm, &np));
+  if (np == 1) PetscCall(DMGetField(cdm, 0, NULL, &disc));
+  if (disc) PetscCall(PetscObjectGetClassId(disc, &id));
+  PetscCall(DMPlexGetHeightStratum(dm, 0, &cStart, &cEnd));
+  if (cEnd > cStart) PetscCall(DMPlexGetCellType(dm, cStart, &ct0));
+  for (PetscInt c = cStart + 1; c < cEnd && !mixed; ++c) {
+    PetscCall(DMPlexGetCellType(dm, c, &ct));
+    mixed = ct != ct0;
+  }
+  if (id != PETSCFE_CLASSID || cdim != dim || mixed || cEnd <= cStart) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(PetscQuadratureGetData(q, NULL, NULL, &np, &pts, NULL));
+  PetscCall(PetscFECreateTabulation((PetscFE)disc, 1, np, pts, 1, T));
+  if ((*T)->Nc != dim || (*T)->cdim != dim) PetscCall(PetscTabulationDestroy(T));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* detJ and shape at the check points of cell c: from the tabulation (J_ik = sum_b x_b dphi_b,i/dxi_k
+   over the cell's closure coordinates) or from PETSc */
+static PetscErrorCode CellJacobians(DM dm, Vec coords, PetscTabulation T, PetscQuadrature q, PetscInt c, PetscReal detJ[], PetscReal shape[])
+{
+  PetscInt     dim, np;
+  PetscReal    J[9 * 8], v0[3 * 8], invJ[9 * 8];
+  PetscScalar *x = NULL;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMGetDimension(dm, &dim));
+  PetscCall(PetscQuadratureGetData(q, NULL, NULL, &np, NULL, NULL));
+  if (!T) PetscCall(DMPlexComputeCellGeometryFEM(dm, c, q, v0, J, invJ, detJ));
+  else {
+    DM       cdm;
+    PetscInt n;
+    PetscCall(DMGetCoordinateDM(dm, &cdm));
+    PetscCall(DMPlexVecGetClosure(cdm, NULL, coords, c, &n, &x));
+    PetscCheck(n == T->Nb, PETSC_COMM_SELF, PETSC_ERR_PLIB, "cell %" PetscInt_FMT ": %" PetscInt_FMT " closure coordinates for %" PetscInt_FMT " basis functions", c, n, T->Nb);
+    for (PetscInt p = 0; p < np; ++p)
+      for (PetscInt i = 0; i < dim; ++i)
+        for (PetscInt k = 0; k < dim; ++k) {
+          PetscReal v = 0.0;
+          for (PetscInt b = 0; b < n; ++b) v += PetscRealPart(x[b]) * T->T[1][((p * n + b) * dim + i) * dim + k]; /* Nc = cdim = dim */
+          J[p * dim * dim + i * dim + k] = v;
+        }
+    PetscCall(DMPlexVecRestoreClosure(cdm, NULL, coords, c, &n, &x));
+  }
+  for (PetscInt p = 0; p < np; ++p) {
+    PetscReal d;
+    JacobianShape(dim, &J[p * dim * dim], &d, &shape[p]);
+    if (T) detJ[p] = d;
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The tabulated Jacobians agree with PETSc's on cells [c0, c1), or the tabulation is dropped */
+static PetscErrorCode CheckTabulation(DM dm, Vec coords, PetscQuadrature q, PetscInt c0, PetscInt c1, PetscTabulation *T)
+{
+  PetscReal d0[8], d1[8], s[8];
+  PetscInt  np;
+
+  PetscFunctionBeginUser;
+  if (!*T) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(PetscQuadratureGetData(q, NULL, NULL, &np, NULL, NULL));
+  for (PetscInt c = c0; c < c1 && *T; ++c) {
+    PetscCall(CellJacobians(dm, coords, *T, q, c, d0, s));
+    PetscCall(CellJacobians(dm, coords, NULL, q, c, d1, s));
+    for (PetscInt k = 0; k < np && *T; ++k)
+      if (PetscAbsReal(d0[k] - d1[k]) > 1e-10 * PetscAbsReal(d1[k])) PetscCall(PetscTabulationDestroy(T));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Every cell must have a positive Jacobian determinant at its check points (tensor cells: 2^dim
+   Gauss points; simplices: affine) and not be flat: shape (JacobianShape) above 1e-8, a
+   scale-free bound. One line otherwise. */
 static PetscErrorCode CheckCells(DM dm)
 {
   PetscQuadrature q = NULL;
-  PetscInt        dim, cStart, cEnd, nq = 1, bad = -1, kind = 0, badAll[2];
-  PetscReal      *v0, *J, *invJ, *detJ, shape = 1.0;
-  DMPolytopeType  ct;
+  PetscTabulation T = NULL;
+  Vec             coords;
+  PetscInt        dim, cStart, cEnd, bad = -1, kind = 0, badAll[2];
+  PetscReal       detJ[8], shape[8];
+  DMPolytopeType  ct = DM_POLYTOPE_UNKNOWN;
 
   PetscFunctionBeginUser;
   PetscCall(DMGetCoordinatesLocalSetUp(dm)); /* collective, before the per-cell geometry */
+  PetscCall(DMGetCoordinatesLocal(dm, &coords));
   PetscCall(DMGetDimension(dm, &dim));
   PetscCall(DMPlexGetHeightStratum(dm, 0, &cStart, &cEnd));
-  if (cEnd > cStart) {
-    PetscCall(DMPlexGetCellType(dm, cStart, &ct));
-    if (ct == DM_POLYTOPE_QUADRILATERAL || ct == DM_POLYTOPE_HEXAHEDRON) {
-      PetscCall(PetscDTGaussTensorQuadrature(dim, 1, 2, -1.0, 1.0, &q));
-      nq = 1 << dim;
-    }
-  }
-  PetscCall(PetscMalloc4(nq * dim, &v0, nq * dim * dim, &J, nq * dim * dim, &invJ, nq, &detJ));
+  if (cEnd > cStart) PetscCall(DMPlexGetCellType(dm, cStart, &ct));
+  PetscCall(CheckPoints(dim, ct, &q));
+  PetscCall(CoordinateTabulation(dm, q, &T));
+  PetscCall(CheckTabulation(dm, coords, q, cStart, PetscMin(cEnd, cStart + 8), &T));
   for (PetscInt c = cStart; c < cEnd && bad < 0; ++c) {
-    PetscCall(DMPlexComputeCellGeometryFEM(dm, c, q, v0, J, invJ, detJ));
-    for (PetscInt k = 0; k < nq && bad < 0; ++k) {
-      PetscReal cols = 1.0;
-      for (PetscInt j = 0; j < dim; ++j) {
-        PetscReal n2 = 0.0;
-        for (PetscInt i = 0; i < dim; ++i) n2 += PetscSqr(J[k * dim * dim + i * dim + j]);
-        cols *= PetscSqrtReal(n2);
-      }
-      shape = cols > 0.0 ? detJ[k] / cols : 0.0;
+    PetscInt np;
+    PetscCall(PetscQuadratureGetData(q, NULL, NULL, &np, NULL, NULL));
+    PetscCall(CellJacobians(dm, coords, T, q, c, detJ, shape));
+    for (PetscInt k = 0; k < np && bad < 0; ++k) {
       if (detJ[k] < 0.0) bad = c, kind = 1;
-      else if (!(shape > 1e-8)) bad = c, kind = 2;
+      else if (!(shape[k] > 1e-8)) bad = c, kind = 2;
     }
   }
-  PetscCall(PetscFree4(v0, J, invJ, detJ));
+  if (T) PetscCall(PetscTabulationDestroy(&T));
   PetscCall(PetscQuadratureDestroy(&q));
   badAll[0] = bad >= 0 ? 1 : 0, badAll[1] = kind;
   PetscCall(MPIU_Allreduce(MPI_IN_PLACE, badAll, 2, MPIU_INT, MPI_MAX, PetscObjectComm((PetscObject)dm)));

@@ -83,6 +83,8 @@ pair slave equals master|input/hertz2d_twobody.opts|-contact_pair_0_master_value
 pair surfaces share a vertex (adjacent faces of one body)|input/block2d.opts|-contact_pair_0_slave_values 1 -contact_pair_0_master_values 2
 inverted cells (box bounds reversed)|input/block2d.opts|-dm_plex_box_lower 1,0 -dm_plex_box_upper 0,1
 flat cells (zero box width)|input/block2d.opts|-dm_plex_box_upper 0,1
+inverted hexahedra (3D box bounds reversed)|input/block3d.opts|-dm_plex_box_lower 1,0,0 -dm_plex_box_upper 0,1,1
+flat hexahedra (zero box height)|input/block3d.opts|-dm_plex_box_upper 1,1,0
 manufactured solution with contact|input/hertz2d.opts|-material_mms 0.01
 augmentation budget zero|input/hertz2d.opts|-contact_method alm -contact_alm_max 0
 CASES
