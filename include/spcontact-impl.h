@@ -374,6 +374,7 @@ struct _n_SPSolver {
   PetscBool           userAtol;
   PetscInt            stallIts, sinceProgress, cycling; /* stagnation: stop after stallIts iterations without progress (cycling: of them, with active-set changes) */
   PetscReal           bestF, bestGap;
+  PetscReal           prevF;     /* |F| at the previous convergence test of this solve (the round-off floor test) */
   PetscBool           stalled;
   PetscBool           reorthogonalise; /* GMRES re-orthogonalises every Arnoldi vector (after a breakdown) */
   PetscInt            jacReuseMax, jacReused, jacVersion, jacReuses; /* Jacobian reuse on an unchanged active set */

@@ -376,6 +376,25 @@ static PetscErrorCode LinearTolerance(SPSolver s, PetscInt it, PetscReal fnorm)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The residual's round-off floor. With a large penalty |F| can stop falling a little above the
+   relative target: F1a (friction, alpha 1000) sits at 2e-13 to 3e-13 against 1.6e-13 whatever the
+   Newton step, and every load step then stalled into the cut-back floor. An iterate within 10x of
+   the target whose Newton step did not halve |F|, with no shift update that raised it, is at that
+   floor: the residual test passes there, and the contact test (active set, gap, stick creep,
+   stick/slip set) still decides. */
+static PetscErrorCode RoundOffFloor(SPSolver s, PetscInt it, PetscReal fnorm, SNESConvergedReason *reason)
+{
+  SPContactStats st = {0};
+
+  PetscFunctionBeginUser;
+  if (it == 0 || s->userAtol || fnorm > 10.0 * s->atolRel * s->fscale || fnorm < 0.5 * s->prevF) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(SPContactGetIterationStats(s->contact, &st));
+  if (st.maxShiftChange > 0.0) PetscFunctionReturn(PETSC_SUCCESS);
+  *reason = SNES_CONVERGED_FNORM_ABS;
+  PetscCall(PetscInfo(s->snes, "residual %g at its round-off floor (target %g): the residual test passes\n", (double)fnorm, (double)(s->atolRel * s->fscale)));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscErrorCode Converged(SNES snes, PetscInt it, PetscReal xnorm, PetscReal snorm, PetscReal fnorm, SNESConvergedReason *reason, void *ctx)
 {
   SPSolver  s = (SPSolver)ctx;
@@ -386,13 +405,19 @@ static PetscErrorCode Converged(SNES snes, PetscInt it, PetscReal xnorm, PetscRe
   PetscCall(SNESConvergedDefault(snes, it, xnorm, snorm, fnorm, reason, NULL));
   /* before the short-step test, which SNESConvergedDefault checks after its own atol */
   if (!s->userAtol && (*reason == SNES_CONVERGED_ITERATING || *reason == SNES_CONVERGED_SNORM_RELATIVE) && fnorm <= s->atolRel * s->fscale) *reason = SNES_CONVERGED_FNORM_ABS;
+  /* A re-solve after an augmentation takes at least one Newton step: its force change can lie
+     below the residual tolerance (B4 at 1e6 dofs: 2e-13 against 7e-13), and a solve that stops at
+     once leaves the gap, and the next augmentation's, where they were (alm: 30 updates, cut-back) */
+  if (it == 0 && s->resolve && *reason > 0) *reason = SNES_CONVERGED_ITERATING;
   PetscCall(LogIteration(s, it, fnorm));
   PetscCall(SPContactIsActive(s->contact, &on));
+  if (on && (*reason == SNES_CONVERGED_ITERATING || *reason == SNES_CONVERGED_SNORM_RELATIVE)) PetscCall(RoundOffFloor(s, it, fnorm, reason));
   if (on && *reason > 0) {
     /* the residual test itself must pass: a short step says nothing once the shift moves */
     PetscCall(SPContactConverged(s->contact, &ok));
     if (!ok || *reason == SNES_CONVERGED_SNORM_RELATIVE) *reason = SNES_CONVERGED_ITERATING;
   }
+  s->prevF = fnorm;
   PetscCall(CheckStall(s, it, fnorm, reason));
   if (*reason == SNES_CONVERGED_ITERATING) PetscCall(LinearTolerance(s, it, fnorm));
   PetscFunctionReturn(PETSC_SUCCESS);
