@@ -95,7 +95,8 @@ CASES
 # With friction Anderson also steps the stuck points' tangential shifts (s_T <- s_T + Dg_T, the
 # same affine fixed point). F4, the frictional two-pass patch at alpha 100: the plain update takes
 # 177 Newton iterations, Anderson 50 (measured); both pass the patch (pressure and tangential
-# traction at every point within 1e-6, creep <= 1e-10 h, force Q to 1e-8); 1, 2 and 3 ranks agree.
+# traction at every point within 1e-6, creep <= 1e-10 h, force Q to 1e-8); 1, 2 and 3 ranks agree
+# (figures to 1e-8, Newton iterations within one).
 test_accel_friction_patch() {
   local rc=0 np
   for np in 1 2 3; do
@@ -111,7 +112,10 @@ test_accel_friction_patch() {
     assert_close "force_x_np$np" "$(sval "$out" contact_force_x)" -0.0015 1e-8 || rc=1
   done
   for np in 2 3; do
-    same_summary "$CASE_DIR/np1.txt" "$CASE_DIR/np$np.txt" 1e-8 contact_force_x contact_force_y contact_peak_pressure displacement_max contact_stick_points newton_iterations || rc=1
+    same_summary "$CASE_DIR/np1.txt" "$CASE_DIR/np$np.txt" 1e-8 contact_force_x contact_force_y contact_peak_pressure displacement_max contact_stick_points || rc=1
+    # 3 ranks add off-rank contributions in message arrival order: round-off that can move the
+    # last Newton iteration of a step (49 against 50 in one of five 3-rank runs)
+    assert_close "newton_np${np}_vs_np1" "$(sval "$CASE_DIR/np$np.txt" newton_iterations)" "$(sval "$CASE_DIR/np1.txt" newton_iterations)" 0 1 || rc=1
   done
   return $rc
 }
