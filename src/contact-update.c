@@ -56,7 +56,6 @@ static PetscErrorCode Bookkeep(SPContact c, PetscReal maxDs, PetscBool compare)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Before a Newton solve: active set of the initial iterate (it drives the first Jacobian) */
 /* An accelerator of the in-Newton update starts a new history at a new solve and whenever its
    set of points moves; alm's spans the augmentations of a load step (SPContactSaveState resets it) */
 static PetscErrorCode ResetInNewton(SPContact c, SPShiftAccel a)
@@ -66,6 +65,7 @@ static PetscErrorCode ResetInNewton(SPContact c, SPShiftAccel a)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Before a Newton solve: active set of the initial iterate (it drives the first Jacobian) */
 PetscErrorCode SPContactBeginSolve(SPContact c, Vec X)
 {
   PetscFunctionBeginUser;

@@ -266,7 +266,7 @@ static PetscErrorCode CheckCells(DM dm)
   PetscQuadrature q = NULL;
   PetscTabulation T = NULL;
   Vec             coords;
-  PetscInt        dim, cStart, cEnd, bad = -1, kind = 0, badAll[2];
+  PetscInt        dim, cStart, cEnd, np, bad = -1, kind = 0, badAll[2];
   PetscReal       detJ[8], shape[8];
   DMPolytopeType  ct = DM_POLYTOPE_UNKNOWN;
 
@@ -279,9 +279,8 @@ static PetscErrorCode CheckCells(DM dm)
   PetscCall(CheckPoints(dim, ct, &q));
   PetscCall(CoordinateTabulation(dm, q, &T));
   PetscCall(CheckTabulation(dm, coords, q, cStart, PetscMin(cEnd, cStart + 8), &T));
+  PetscCall(PetscQuadratureGetData(q, NULL, NULL, &np, NULL, NULL));
   for (PetscInt c = cStart; c < cEnd && bad < 0; ++c) {
-    PetscInt np;
-    PetscCall(PetscQuadratureGetData(q, NULL, NULL, &np, NULL, NULL));
     PetscCall(CellJacobians(dm, coords, T, q, c, detJ, shape));
     for (PetscInt k = 0; k < np && bad < 0; ++k) {
       if (detJ[k] < 0.0) bad = c, kind = 1;

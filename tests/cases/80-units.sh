@@ -193,11 +193,11 @@ test_units_wall_time() {
 # |F| 2e-13 to 3e-13 against the relative target 1.6e-13; every method stalled into the cut-back
 # floor (10 cut-backs) before the floor test. Now each converges without a cut-back: penalty
 # creeps tau/eps_T = 3.75e-8 (friction.md), shifted and alm below 1e-10 h (h = 0.025), the
-# tangential force 0.0015 to 1e-8; on 1 and 2 ranks with the same figures
+# tangential force 0.0015 to 1e-8; on 1, 2 and 3 ranks with the same figures
 test_units_roundoff_floor_f1a_alpha1000() {
   local rc=0 m np out
   for m in penalty shifted alm; do
-    for np in 1 2; do
+    for np in 1 2 3; do
       out=$CASE_DIR/${m}_np$np.txt
       spc "$out" "$np" -options_file input/friction_block2d.opts -contact_method $m -contact_alpha 1000 -output_dir "$CASE_DIR" -output_name "${m}_np$np" -output_fields false || { echo "$m np $np: run failed"; rc=1; continue; }
       assert_eq "converged_${m}_np$np" "$(sval "$out" converged)" yes || rc=1
@@ -207,7 +207,9 @@ test_units_roundoff_floor_f1a_alpha1000() {
       else assert_le "creep_${m}_np$np" "$(sval "$out" contact_max_stick_creep)" 2.5e-12 || rc=1; fi
       assert_le "newton_${m}_np$np" "$(sval "$out" newton_iterations)" 24 || rc=1
     done
-    same_summary "$CASE_DIR/${m}_np1.txt" "$CASE_DIR/${m}_np2.txt" 1e-8 contact_tangential_force_x contact_force_y displacement_max || rc=1
+    for np in 2 3; do
+      same_summary "$CASE_DIR/${m}_np1.txt" "$CASE_DIR/${m}_np$np.txt" 1e-8 contact_tangential_force_x contact_force_y displacement_max || rc=1
+    done
   done
   return $rc
 }
@@ -215,16 +217,20 @@ test_units_roundoff_floor_f1a_alpha1000() {
 # An alm re-solve after an augmentation takes at least one Newton step: with -contact_gap_rtol
 # 1e-13 on B2 the augmentation's force change falls below the residual target, and a re-solve
 # that stopped at once left the gap where it was (13 cut-backs, 593 Newton iterations, not
-# converged). Now: converged without a cut-back, the gap error below 1e-13 h_c, the force to 1e-8
+# converged). Now: converged without a cut-back, the gap error below 1e-13 h_c, the force to 1e-8,
+# the same figures on 1, 2 and 3 ranks
 test_units_alm_resolve_takes_a_step() {
   local rc=0 np out
-  for np in 1 2; do
+  for np in 1 2 3; do
     out=$CASE_DIR/np$np.txt
     spc "$out" "$np" -options_file input/hertz2d.opts -contact_method alm -contact_gap_rtol 1e-13 -output_dir "$CASE_DIR" -output_name "np$np" -output_fields false || { echo "np $np: run failed"; rc=1; continue; }
     assert_eq "converged_np$np" "$(sval "$out" converged)" yes || rc=1
     assert_eq "cutbacks_np$np" "$(sval "$out" cutbacks)" 0 || rc=1
     assert_le "gap_error_np$np" "$(sval "$out" contact_gap_error)" "$(sval "$out" contact_gap_tol)" || rc=1
     assert_close "force_np$np" "$(sval "$out" contact_force_y)" 0.005 1e-8 || rc=1
+  done
+  for np in 2 3; do
+    same_summary "$CASE_DIR/np1.txt" "$CASE_DIR/np$np.txt" 1e-8 contact_force_y contact_peak_pressure displacement_max || rc=1
   done
   return $rc
 }
