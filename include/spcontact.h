@@ -103,6 +103,7 @@ PETSC_EXTERN PetscErrorCode SPContactDestroy(SPContact *);
 /* matrix.c */
 PETSC_EXTERN PetscErrorCode SPMatrixCreate(DM, PetscBool, Mat *);
 PETSC_EXTERN PetscErrorCode SPMatrixSetRigidBodyModes(DM, PetscBool, Mat);
+PETSC_EXTERN PetscErrorCode SPMatrixShareGraph(Mat);
 PETSC_EXTERN PetscErrorCode SPVertexGlobalIndices(PetscSection, PetscSection, PetscInt, PetscInt, PetscInt[]);
 
 /* fast-elastic.c */

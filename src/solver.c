@@ -486,11 +486,12 @@ PetscErrorCode SPSolverCreate(DM dm, SPProblem problem, SPContact contact, SPLog
 }
 
 /* The system matrix (contact-pair couplings join its pattern in SPContactSetUpJacobian) and its near-null space */
-static PetscErrorCode SetUpMatrix(SPSolver s, PetscBool prealloc)
+static PetscErrorCode SetUpMatrix(SPSolver s, PetscBool prealloc, PetscBool shareGraph)
 {
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(s->log->matCreate, 0, 0, 0, 0));
   PetscCall(SPMatrixCreate(s->dm, prealloc, &s->J));
+  if (shareGraph) PetscCall(SPMatrixShareGraph(s->J));
   PetscCall(PetscLogEventEnd(s->log->matCreate, 0, 0, 0, 0));
   PetscCall(PetscLogEventBegin(s->log->nearNullSpace, 0, 0, 0, 0));
   PetscCall(SPMatrixSetRigidBodyModes(s->dm, prealloc, s->J));
@@ -503,7 +504,7 @@ PetscErrorCode SPSolverSetFromOptions(SPSolver s)
 {
   SNESLineSearch ls;
   PetscBool      on;
-  PetscBool      fast = PETSC_TRUE, prealloc = PETSC_TRUE, linear, friction, testJ;
+  PetscBool      fast = PETSC_TRUE, prealloc = PETSC_TRUE, share = PETSC_TRUE, linear, friction, testJ;
 
   PetscFunctionBeginUser;
   PetscCall(SPProblemIsLinear(s->problem, &s->reuse));
@@ -523,6 +524,7 @@ PetscErrorCode SPSolverSetFromOptions(SPSolver s)
   PetscCall(PetscOptionsReal("-solver_inexact_settled", "Inexact Newton: factor on the loosest linear tolerance for a step from an iterate whose active set did not change (the step then feeds a shift update), and for a solve's first step", "SPSolverSetFromOptions", s->settledFactor, &s->settledFactor, NULL));
   PetscCall(PetscOptionsInt("-solver_stall_its", "Stop a Newton solve after this many iterations without a 1% decrease of the residual or the gap error (0: never)", "SPSolverSetFromOptions", s->stallIts, &s->stallIts, NULL));
   PetscCall(PetscOptionsBool("-solver_fast_prealloc", "First-order mesh: preallocate the matrix from vertex adjacency and build the rigid-body modes from vertex coordinates (false: DMCreateMatrix, DMPlexCreateRigidBody)", "SPSolverSetFromOptions", prealloc, &prealloc, NULL));
+  PetscCall(PetscOptionsBool("-solver_gamg_shared_graph", "Frictionless small strain (a symmetric matrix): GAMG aggregates on the system matrix itself instead of PETSc's copy of it (same aggregates, one matrix less at the peak; false: PETSc's copy)", "SPSolverSetFromOptions", share, &share, NULL));
   PetscOptionsEnd();
   PetscCheck(s->atolRel >= 0.0 && s->atolRel < 1.0, PetscObjectComm((PetscObject)s->dm), PETSC_ERR_USER_INPUT, "-solver_atol_rel %g: must be in [0, 1)", (double)s->atolRel);
   PetscCheck(s->stallIts >= 0, PetscObjectComm((PetscObject)s->dm), PETSC_ERR_USER_INPUT, "-solver_stall_its %" PetscInt_FMT ": must be >= 0 (0: no stagnation test)", s->stallIts);
@@ -531,7 +533,7 @@ PetscErrorCode SPSolverSetFromOptions(SPSolver s)
   PetscCheck(s->settledFactor > 0.0 && s->settledFactor <= 1.0, PetscObjectComm((PetscObject)s->dm), PETSC_ERR_USER_INPUT, "-solver_inexact_settled %g: must be in (0, 1]", (double)s->settledFactor);
   if (testJ) s->jacReuseMax = 0; /* -snes_test_jacobian compares the assembled Jacobian at every iterate */
   PetscCall(PetscOptionsHasName(NULL, NULL, "-snes_atol", &s->userAtol));
-  PetscCall(SetUpMatrix(s, prealloc));
+  PetscCall(SetUpMatrix(s, prealloc, share));
   if (fast) {
     PetscCall(PetscLogEventBegin(s->log->fastSetUp, 0, 0, 0, 0));
     PetscCall(SPFastElasticCreate(s->dm, s->problem, &s->fast));
@@ -553,7 +555,7 @@ PetscErrorCode SPSolverSetFromOptions(SPSolver s)
   } else {
     /* frictionless small strain: the Jacobian is the Hessian of an energy (bulk plus penalty with
        fixed shifts), symmetric at every iterate. Said once: GAMG then builds its graph without a
-       transpose and a sum (two matrix copies fewer at the peak) */
+       transpose and a sum, and without a copy (src/matrix-graph.c) */
     PetscCall(MatSetOption(s->J, MAT_SYMMETRIC, PETSC_TRUE));
     PetscCall(MatSetOption(s->J, MAT_SYMMETRY_ETERNAL, PETSC_TRUE));
   }

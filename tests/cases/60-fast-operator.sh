@@ -67,3 +67,33 @@ test_fast_operator_fallback() {
   assert_eq mms_operator "$(sval "$CASE_DIR/mms.txt" bulk_operator)" petscfe || rc=1
   return $rc
 }
+
+# GAMG's graph (src/matrix-graph.c): on a frictionless small-strain run GAMG aggregates on the
+# system matrix itself instead of PETSc's copy; the aggregates, hence every iteration count and
+# figure, are the same as with the copy (-solver_gamg_shared_graph false), on 1, 2 and 3 ranks.
+# -info names the path taken; with friction (a non-symmetric matrix) PETSc's copy is used.
+fop_graph() {
+  local np=$1 rc=0; shift
+  spc "$CASE_DIR/shared$np.txt" "$np" "$@" -info :mat -output_dir "$CASE_DIR" -output_name shared || return 1
+  spc "$CASE_DIR/copy$np.txt" "$np" "$@" -info :mat -solver_gamg_shared_graph false -output_dir "$CASE_DIR" -output_name copy || return 1
+  grep -q 'GAMG graph: the system matrix itself' "$CASE_DIR/shared$np.txt" || { echo "$np rank(s): the shared graph was not used"; rc=1; }
+  ! grep -q 'GAMG graph: the system matrix itself' "$CASE_DIR/copy$np.txt" || { echo "$np rank(s): the shared graph was used with false"; rc=1; }
+  assert_eq converged "$(sval "$CASE_DIR/shared$np.txt" converged)" yes || rc=1
+  for k in newton_iterations linear_iterations contact_active_points; do
+    assert_eq "$k" "$(sval "$CASE_DIR/shared$np.txt" $k)" "$(sval "$CASE_DIR/copy$np.txt" $k)" || rc=1
+  done
+  same_summary "$CASE_DIR/copy$np.txt" "$CASE_DIR/shared$np.txt" 1e-12 displacement_max contact_force_x contact_force_y contact_force_z contact_max_penetration || rc=1
+  return $rc
+}
+test_gamg_shared_graph_b4() {
+  local rc=0
+  for np in 1 2 3; do fop_graph $np -options_file input/indent3d.opts -dm_plex_box_faces 16,16,16 || rc=1; done
+  same_summary "$CASE_DIR/shared1.txt" "$CASE_DIR/shared2.txt" 1e-8 contact_force_z displacement_max || rc=1
+  same_summary "$CASE_DIR/shared1.txt" "$CASE_DIR/shared3.txt" 1e-8 contact_force_z displacement_max || rc=1
+  return $rc
+}
+test_gamg_shared_graph_friction_copies() {
+  spc "$CASE_DIR/fric.txt" 1 -options_file input/friction_block2d.opts -info :mat -output_dir "$CASE_DIR" -output_name fric || return 1
+  ! grep -q 'GAMG graph: the system matrix itself' "$CASE_DIR/fric.txt" || { echo "friction run used the shared graph"; return 1; }
+  grep -q 'MatCoarsenApply_MISK_private' "$CASE_DIR/fric.txt" || { echo "no GAMG coarsening in the friction run"; return 1; }
+}
