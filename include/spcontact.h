@@ -100,7 +100,7 @@ PETSC_EXTERN PetscErrorCode SPContactWritePoints(SPContact, Vec, const char[]);
 PETSC_EXTERN PetscErrorCode SPContactView(SPContact, PetscViewer);
 PETSC_EXTERN PetscErrorCode SPContactDestroy(SPContact *);
 
-/* matrix.c */
+/* matrix.c, matrix-graph.c */
 PETSC_EXTERN PetscErrorCode SPMatrixCreate(DM, PetscBool, Mat *);
 PETSC_EXTERN PetscErrorCode SPMatrixSetRigidBodyModes(DM, PetscBool, Mat);
 PETSC_EXTERN PetscErrorCode SPMatrixShareGraph(Mat);

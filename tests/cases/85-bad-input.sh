@@ -124,6 +124,9 @@ test_bad_input_unused_option() {
   assert_eq warnings_silenced "$(grep -c 'warning' "$CASE_DIR/quiet.txt")" 0 || rc=1
   spc "$CASE_DIR/clean.txt" 1 -options_file input/hertz2d.opts -output_dir "$CASE_DIR" -output_name clean || rc=1
   assert_eq warnings_clean_run "$(grep -c 'warning' "$CASE_DIR/clean.txt")" 0 || rc=1
+  # spcontact's own GAMG defaults are not the user's: no report when another preconditioner runs
+  spc "$CASE_DIR/lu.txt" 1 -options_file input/hertz2d.opts -ksp_type preonly -pc_type lu -output_dir "$CASE_DIR" -output_name lu || rc=1
+  assert_eq warnings_other_pc "$(grep -c 'warning' "$CASE_DIR/lu.txt")" 0 || rc=1
   return $rc
 }
 
