@@ -44,7 +44,7 @@ static PetscErrorCode ErrorHandler(MPI_Comm comm, int line, const char *fun, con
    own report). Defaults the code itself sets for objects a run may not create are not reported. */
 static PetscErrorCode ReportUnusedOptions(void)
 {
-  static const char *const own[] = {"mg_levels_ksp_chebyshev_esteig", "mg_levels_ksp_max_it", "pc_gamg_reuse_interpolation", "dm_plex_simplex", "petscspace_degree"};
+  static const char *const own[] = {"dm_plex_simplex", "petscspace_degree"};
   PetscInt                 n;
   char                   **names, **values;
   PetscBool                set, mine;

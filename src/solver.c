@@ -425,7 +425,9 @@ static PetscErrorCode Converged(SNES snes, PetscInt it, PetscReal xnorm, PetscRe
 
 /* A PETSc option default for an object configured inside PETSc (GAMG's level smoothers): set only
    when the user did not. With the default safety factor 1.1 the Chebyshev smoother's eigenvalue
-   estimate is too low on contact Jacobians and CG stops with DIVERGED_INDEFINITE_PC. */
+   estimate is too low on contact Jacobians and CG stops with DIVERGED_INDEFINITE_PC. The option
+   counts as used, so a run with another preconditioner does not report spcontact's own defaults
+   as unused (main.c) */
 static PetscErrorCode SetDefaultOption(const char name[], const char value[])
 {
   PetscBool set;
@@ -433,6 +435,7 @@ static PetscErrorCode SetDefaultOption(const char name[], const char value[])
   PetscFunctionBeginUser;
   PetscCall(PetscOptionsHasName(NULL, NULL, name, &set));
   if (!set) PetscCall(PetscOptionsSetValue(NULL, name, value));
+  PetscCall(PetscOptionsHasName(NULL, NULL, name, &set)); /* marks it used */
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
