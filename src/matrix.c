@@ -2,9 +2,10 @@
    P1/Q1) the sparsity is vertex adjacency through cells, built here directly: each rank lists the
    neighbours of its local vertices, ghost vertices send their lists to the owner (PetscSFGather),
    and the owner counts the unconstrained dofs of the union, split into diagonal/off-diagonal
-   blocks. The pattern is then fixed by inserting zero cell blocks, as DMCreateMatrix does, so the
-   result is the same matrix (same nonzeros, block size, local-to-global map, DM) at a fraction of
-   the cost. Contact-pair couplings are added later by contact-pattern.c. Every other
+   blocks. The pattern is then fixed by inserting a zero row per owned dof with the union as its
+   columns (DMCreateMatrix inserts zero cell blocks, rows of other ranks included), so the result
+   is the same matrix (same nonzeros, block size, local-to-global map, DM) at a fraction of the
+   cost. Contact-pair couplings are added later by contact-pattern.c. Every other
    layout (P2/Q2, several fields) goes through DMCreateMatrix. */
 #include <spcontact-impl.h>
 
@@ -27,8 +28,9 @@ PetscErrorCode SPVertexGlobalIndices(PetscSection ls, PetscSection gs, PetscInt 
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Vertex adjacency of the local mesh. A vertex is coded as 4 g + n: g its global vertex number,
-   n its number of unconstrained dofs (<= 3), so a neighbour list carries what the owner counts. */
+/* Vertex adjacency of the local mesh. A vertex is coded as 4 g + n: g the global offset of its
+   dofs (the owner's), n its number of unconstrained dofs (<= 3), so a neighbour list carries the
+   owner's column indices g .. g + n - 1, and sorted codes give sorted columns. */
 typedef struct {
   PetscInt    vStart, vEnd, cStart, cEnd, dim;
   PetscInt   *cellOff, *cellVert; /* CSR: local vertices of each cell */
@@ -68,29 +70,27 @@ static PetscErrorCode CellVertices(DM dm, PetscInt c, PetscInt vStart, PetscInt 
 
 static PetscErrorCode GraphCreate(DM dm, Graph *g)
 {
-  PetscSection    ls;
-  IS              vnum;
-  const PetscInt *gv;
-  PetscInt        nv, nc, verts[64], n, *cnt, *bound;
+  PetscSection ls, gs;
+  PetscInt     nv, nc, verts[64], n, *cnt, *bound;
 
   PetscFunctionBeginUser;
   PetscCall(DMGetDimension(dm, &g->dim));
   PetscCall(DMGetLocalSection(dm, &ls));
+  PetscCall(DMGetGlobalSection(dm, &gs));
   PetscCall(DMPlexGetDepthStratum(dm, 0, &g->vStart, &g->vEnd));
   PetscCall(DMPlexGetHeightStratum(dm, 0, &g->cStart, &g->cEnd));
   nv = g->vEnd - g->vStart;
   nc = g->cEnd - g->cStart;
   /* vertex codes */
   PetscCall(PetscMalloc1(nv, &g->code));
-  PetscCall(DMPlexGetVertexNumbering(dm, &vnum));
-  PetscCall(ISGetIndices(vnum, &gv));
   for (PetscInt v = 0; v < nv; ++v) {
-    PetscInt dof, cdof, num = gv[v] < 0 ? -(gv[v] + 1) : gv[v];
+    PetscInt dof, cdof, goff;
     PetscCall(PetscSectionGetDof(ls, g->vStart + v, &dof));
     PetscCall(PetscSectionGetConstraintDof(ls, g->vStart + v, &cdof));
-    g->code[v] = 4 * (PetscInt64)num + (dof - cdof);
+    PetscCall(PetscSectionGetOffset(gs, g->vStart + v, &goff));
+    if (goff < 0) goff = -(goff + 1);
+    g->code[v] = 4 * (PetscInt64)goff + (dof - cdof);
   }
-  PetscCall(ISRestoreIndices(vnum, &gv));
   /* cells -> vertices */
   PetscCall(PetscMalloc1(nc + 1, &g->cellOff));
   g->cellOff[0] = 0;
@@ -135,6 +135,17 @@ static PetscErrorCode GraphDestroy(Graph *g)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Sort buf[0..*n) and drop repeats */
+static void SortUnique(PetscInt64 buf[], PetscInt *n)
+{
+  PetscInt m = 0;
+
+  (void)PetscSortInt64(*n, buf);
+  for (PetscInt k = 0; k < *n; ++k)
+    if (!m || buf[k] != buf[m - 1]) buf[m++] = buf[k];
+  *n = m;
+}
+
 /* Sorted unique codes of the neighbours of local vertex v (itself included); buf holds cap */
 static PetscErrorCode Neighbours(const Graph *g, PetscInt v, PetscInt cap, PetscInt64 buf[], PetscInt *n)
 {
@@ -148,31 +159,36 @@ static PetscErrorCode Neighbours(const Graph *g, PetscInt v, PetscInt cap, Petsc
       buf[m++] = g->code[g->cellVert[j]];
     }
   }
-  PetscCall(PetscSortInt64(m, buf));
-  *n = 0;
-  for (PetscInt k = 0; k < m; ++k)
-    if (!*n || buf[k] != buf[*n - 1]) buf[(*n)++] = buf[k];
+  SortUnique(buf, &m);
+  *n = m;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Ghost vertices send their neighbour lists to the owner: an SF with one leaf per ghost vertex
-   (data: count, then the codes, padded to width W) gathered onto the owner's vertex points.
-   On return, recv holds deg[p] lists of width W for each local point p (rootOff[p] onwards). */
-static PetscErrorCode GatherGhostLists(DM dm, const Graph *g, PetscInt *W, const PetscInt **deg, PetscInt **rootOff, PetscInt64 **recv, PetscSF *vsf)
+/* The rows of the owned vertices: their own neighbour lists and those their ghost copies on other
+   ranks send (an SF with one leaf per ghost vertex, data: count, then the codes, padded to width
+   W, gathered onto the owner's vertex points: deg[p] lists for local point p from rootOff[p]) */
+typedef struct {
+  PetscSF         vsf;
+  const PetscInt *deg; /* belongs to vsf */
+  PetscInt       *rootOff, W, pStart, cap;
+  PetscInt64     *recv, *nb; /* nb: one merged list, cap long */
+} Rows;
+
+static PetscErrorCode RowsCreate(DM dm, const Graph *g, Rows *r)
 {
   MPI_Comm           comm = PetscObjectComm((PetscObject)dm);
   PetscSF            sf;
   const PetscInt    *ilocal;
   const PetscSFNode *iremote;
   PetscSFNode       *rem;
-  PetscInt           nroots, nleaves, ng = 0, pStart, pEnd, w, total = 0, *buf;
+  PetscInt           nroots, nleaves, ng = 0, pEnd, w = 0, total = 0, *buf;
   PetscInt64        *send, *nb;
   MPI_Datatype       unit;
 
   PetscFunctionBeginUser;
   PetscCall(DMGetPointSF(dm, &sf));
   PetscCall(PetscSFGetGraph(sf, &nroots, &nleaves, &ilocal, &iremote));
-  PetscCall(DMPlexGetChart(dm, &pStart, &pEnd));
+  PetscCall(DMPlexGetChart(dm, &r->pStart, &pEnd));
   if (nleaves < 0) nleaves = 0;
   PetscCall(PetscMalloc1(nleaves, &rem));
   PetscCall(PetscMalloc1(nleaves, &buf));
@@ -184,117 +200,116 @@ static PetscErrorCode GatherGhostLists(DM dm, const Graph *g, PetscInt *W, const
   }
   /* width: the longest ghost list anywhere */
   PetscCall(PetscMalloc1(g->maxNbr + 1, &nb));
-  w = 0;
   for (PetscInt i = 0; i < ng; ++i) {
     PetscInt n;
     PetscCall(Neighbours(g, buf[i], g->maxNbr + 1, nb, &n));
     w = PetscMax(w, n);
   }
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &w, 1, MPIU_INT, MPI_MAX, comm));
-  *W = w + 1;
-  PetscCall(PetscCalloc1(ng * *W + 1, &send));
+  r->W = w + 1;
+  PetscCall(PetscCalloc1(ng * r->W + 1, &send));
   for (PetscInt i = 0; i < ng; ++i) {
     PetscInt n;
     PetscCall(Neighbours(g, buf[i], g->maxNbr + 1, nb, &n));
-    send[i * *W] = n;
-    for (PetscInt k = 0; k < n; ++k) send[i * *W + 1 + k] = nb[k];
+    send[i * r->W] = n;
+    for (PetscInt k = 0; k < n; ++k) send[i * r->W + 1 + k] = nb[k];
   }
   PetscCall(PetscFree(nb));
   PetscCall(PetscFree(buf));
-  PetscCall(PetscSFCreate(comm, vsf));
-  PetscCall(PetscSFSetGraph(*vsf, pEnd - pStart, ng, NULL, PETSC_OWN_POINTER, rem, PETSC_OWN_POINTER));
-  PetscCall(PetscSFComputeDegreeBegin(*vsf, deg));
-  PetscCall(PetscSFComputeDegreeEnd(*vsf, deg));
-  PetscCall(PetscMalloc1(pEnd - pStart + 1, rootOff));
-  for (PetscInt p = 0; p < pEnd - pStart; ++p) (*rootOff)[p] = total, total += (*deg)[p];
-  (*rootOff)[pEnd - pStart] = total;
-  PetscCall(PetscMalloc1(total * *W + 1, recv));
-  PetscCallMPI(MPI_Type_contiguous((PetscMPIInt)*W, MPIU_INT64, &unit));
+  PetscCall(PetscSFCreate(comm, &r->vsf));
+  PetscCall(PetscSFSetGraph(r->vsf, pEnd - r->pStart, ng, NULL, PETSC_OWN_POINTER, rem, PETSC_OWN_POINTER));
+  PetscCall(PetscSFComputeDegreeBegin(r->vsf, &r->deg));
+  PetscCall(PetscSFComputeDegreeEnd(r->vsf, &r->deg));
+  PetscCall(PetscMalloc1(pEnd - r->pStart + 1, &r->rootOff));
+  for (PetscInt p = 0; p < pEnd - r->pStart; ++p) r->rootOff[p] = total, total += r->deg[p];
+  r->rootOff[pEnd - r->pStart] = total;
+  PetscCall(PetscMalloc1(total * r->W + 1, &r->recv));
+  PetscCallMPI(MPI_Type_contiguous((PetscMPIInt)r->W, MPIU_INT64, &unit));
   PetscCallMPI(MPI_Type_commit(&unit));
-  PetscCall(PetscSFGatherBegin(*vsf, unit, send, *recv));
-  PetscCall(PetscSFGatherEnd(*vsf, unit, send, *recv));
+  PetscCall(PetscSFGatherBegin(r->vsf, unit, send, r->recv));
+  PetscCall(PetscSFGatherEnd(r->vsf, unit, send, r->recv));
   PetscCallMPI(MPI_Type_free(&unit));
   PetscCall(PetscFree(send));
+  r->cap = g->maxNbr + 1;
+  for (PetscInt v = g->vStart; v < g->vEnd; ++v) r->cap = PetscMax(r->cap, g->maxNbr + 1 + r->deg[v - r->pStart] * r->W);
+  PetscCall(PetscMalloc1(r->cap, &r->nb));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode RowsDestroy(Rows *r)
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscFree(r->nb));
+  PetscCall(PetscFree(r->rootOff));
+  PetscCall(PetscFree(r->recv));
+  PetscCall(PetscSFDestroy(&r->vsf));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The sorted unique codes of the columns of the rows of local vertex v (a mesh point), in r->nb */
+static PetscErrorCode RowNeighbours(const Graph *g, Rows *r, PetscInt v, PetscInt *n)
+{
+  const PetscInt p = v - r->pStart;
+
+  PetscFunctionBeginUser;
+  PetscCall(Neighbours(g, v - g->vStart, r->cap, r->nb, n));
+  if (!r->deg[p]) PetscFunctionReturn(PETSC_SUCCESS);
+  for (PetscInt k = r->rootOff[p]; k < r->rootOff[p + 1]; ++k)
+    for (PetscInt j = 0; j < r->recv[k * r->W]; ++j) r->nb[(*n)++] = r->recv[k * r->W + 1 + j];
+  SortUnique(r->nb, n);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 /* Rows per owned vertex: diagonal/off-diagonal nonzeros of each unconstrained dof row */
-static PetscErrorCode CountNonzeros(DM dm, const Graph *g, PetscInt rStart, PetscInt nrows, PetscInt dnnz[], PetscInt onnz[])
+static PetscErrorCode CountNonzeros(DM dm, const Graph *g, Rows *r, PetscInt rStart, PetscInt nrows, PetscInt dnnz[], PetscInt onnz[])
 {
-  MPI_Comm        comm = PetscObjectComm((PetscObject)dm);
-  PetscSection    gs;
-  PetscSF         vsf;
-  const PetscInt *deg;
-  PetscInt       *rootOff, W = 1, nOwned = 0, vlo, cap, pStart;
-  PetscInt64     *recv, *nb, lo, hi;
+  PetscSection gs;
 
   PetscFunctionBeginUser;
   PetscCall(DMGetGlobalSection(dm, &gs));
-  PetscCall(DMPlexGetChart(dm, &pStart, NULL));
-  PetscCall(GatherGhostLists(dm, g, &W, &deg, &rootOff, &recv, &vsf));
-  /* owned global vertex numbers are [vlo, vlo + nOwned) */
-  for (PetscInt v = g->vStart; v < g->vEnd; ++v) {
-    PetscInt goff;
-    PetscCall(PetscSectionGetOffset(gs, v, &goff));
-    if (goff >= 0) nOwned++;
-  }
-  PetscCallMPI(MPI_Scan(&nOwned, &vlo, 1, MPIU_INT, MPI_SUM, comm));
-  vlo -= nOwned;
-  lo = vlo, hi = (PetscInt64)vlo + nOwned;
-  cap = g->maxNbr + 1;
-  for (PetscInt v = g->vStart; v < g->vEnd; ++v) cap = PetscMax(cap, g->maxNbr + 1 + (deg[v - pStart]) * W);
-  PetscCall(PetscMalloc1(cap, &nb));
   for (PetscInt v = g->vStart; v < g->vEnd; ++v) {
     PetscInt goff, n, d = 0, o = 0, rows = (PetscInt)(g->code[v - g->vStart] % 4);
     PetscCall(PetscSectionGetOffset(gs, v, &goff));
     if (goff < 0 || !rows) continue;
-    PetscCall(Neighbours(g, v - g->vStart, cap, nb, &n));
-    if (deg[v - pStart]) { /* merge the lists of the ghost copies */
-      for (PetscInt k = rootOff[v - pStart]; k < rootOff[v - pStart + 1]; ++k)
-        for (PetscInt j = 0; j < recv[k * W]; ++j) nb[n++] = recv[k * W + 1 + j];
-      PetscCall(PetscSortInt64(n, nb));
-      {
-        PetscInt m = 0;
-        for (PetscInt k = 0; k < n; ++k)
-          if (!m || nb[k] != nb[m - 1]) nb[m++] = nb[k];
-        n = m;
-      }
-    }
+    PetscCall(RowNeighbours(g, r, v, &n));
     for (PetscInt k = 0; k < n; ++k) {
-      const PetscInt64 gv = nb[k] / 4;
-      if (gv >= lo && gv < hi) d += (PetscInt)(nb[k] % 4);
-      else o += (PetscInt)(nb[k] % 4);
+      const PetscInt64 col = r->nb[k] / 4;
+      if (col >= rStart && col < (PetscInt64)rStart + nrows) d += (PetscInt)(r->nb[k] % 4);
+      else o += (PetscInt)(r->nb[k] % 4);
     }
-    for (PetscInt r = 0; r < rows; ++r) {
-      PetscCheck(goff - rStart + r >= 0 && goff - rStart + r < nrows, PETSC_COMM_SELF, PETSC_ERR_PLIB, "row outside the local range");
-      dnnz[goff - rStart + r] = d;
-      onnz[goff - rStart + r] = o;
+    for (PetscInt i = 0; i < rows; ++i) {
+      PetscCheck(goff - rStart + i >= 0 && goff - rStart + i < nrows, PETSC_COMM_SELF, PETSC_ERR_PLIB, "row outside the local range");
+      dnnz[goff - rStart + i] = d;
+      onnz[goff - rStart + i] = o;
     }
   }
-  PetscCall(PetscFree(nb));
-  PetscCall(PetscFree(rootOff));
-  PetscCall(PetscFree(recv));
-  PetscCall(PetscSFDestroy(&vsf)); /* deg belongs to the SF */
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Fix the pattern: a zero block per cell, with global indices (constrained < 0) */
-static PetscErrorCode FillPattern(DM dm, const Graph *g, Mat J)
+/* Fix the pattern: the zero rows of each owned vertex, in ascending column order, so nothing
+   travels between ranks and every row fills from its start */
+static PetscErrorCode FillPattern(DM dm, const Graph *g, Rows *r, Mat J)
 {
-  PetscSection ls, gs;
-  PetscInt     dim = g->dim, idx[64 * 3], n;
+  PetscSection gs;
+  PetscInt    *cols, rowIdx[3];
   PetscScalar *zero;
 
   PetscFunctionBeginUser;
-  PetscCall(DMGetLocalSection(dm, &ls));
   PetscCall(DMGetGlobalSection(dm, &gs));
-  PetscCall(PetscCalloc1(64 * 3 * 64 * 3, &zero));
-  for (PetscInt c = 0; c < g->cEnd - g->cStart; ++c) {
-    n = g->cellOff[c + 1] - g->cellOff[c];
-    for (PetscInt k = 0; k < n; ++k) PetscCall(SPVertexGlobalIndices(ls, gs, g->vStart + g->cellVert[g->cellOff[c] + k], dim, &idx[k * dim]));
-    PetscCall(MatSetValues(J, n * dim, idx, n * dim, idx, zero, INSERT_VALUES));
+  PetscCall(PetscMalloc1(3 * r->cap, &cols));
+  PetscCall(PetscCalloc1(3 * 3 * r->cap, &zero));
+  for (PetscInt v = g->vStart; v < g->vEnd; ++v) {
+    PetscInt goff, n, m = 0, rows = (PetscInt)(g->code[v - g->vStart] % 4);
+    PetscCall(PetscSectionGetOffset(gs, v, &goff));
+    if (goff < 0 || !rows) continue;
+    PetscCall(RowNeighbours(g, r, v, &n));
+    for (PetscInt k = 0; k < n; ++k)
+      for (PetscInt i = 0; i < (PetscInt)(r->nb[k] % 4); ++i) cols[m++] = (PetscInt)(r->nb[k] / 4) + i;
+    for (PetscInt i = 0; i < rows; ++i) rowIdx[i] = goff + i;
+    PetscCall(MatSetValues(J, rows, rowIdx, m, cols, zero, INSERT_VALUES));
   }
   PetscCall(PetscFree(zero));
+  PetscCall(PetscFree(cols));
   PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -346,6 +361,7 @@ static PetscErrorCode CreateVertexMatrix(DM dm, Mat *J)
 {
   MPI_Comm               comm = PetscObjectComm((PetscObject)dm);
   Graph                  g;
+  Rows                   r;
   PetscSection           gs;
   PetscInt               nrows, rStart, bs = 1, *dnnz, *onnz;
   MatType                mtype;
@@ -358,10 +374,11 @@ static PetscErrorCode CreateVertexMatrix(DM dm, Mat *J)
   PetscCallMPI(MPI_Scan(&nrows, &rStart, 1, MPIU_INT, MPI_SUM, comm));
   rStart -= nrows;
   PetscCall(PetscCalloc2(nrows, &dnnz, nrows, &onnz));
-  PetscCall(CountNonzeros(dm, &g, rStart, nrows, dnnz, onnz));
+  PetscCall(RowsCreate(dm, &g, &r));
+  PetscCall(CountNonzeros(dm, &g, &r, rStart, nrows, dnnz, onnz));
   PetscCall(BlockSize(dm, &g, &bs));
   if (bs > 1)
-    for (PetscInt r = 0; r < nrows / bs; ++r) dnnz[r] = dnnz[r * bs] / bs, onnz[r] = onnz[r * bs] / bs;
+    for (PetscInt i = 0; i < nrows / bs; ++i) dnnz[i] = dnnz[i * bs] / bs, onnz[i] = onnz[i * bs] / bs;
   PetscCall(DMGetMatType(dm, &mtype));
   PetscCall(MatCreate(comm, J));
   PetscCall(MatSetSizes(*J, nrows, nrows, PETSC_DETERMINE, PETSC_DETERMINE));
@@ -374,7 +391,8 @@ static PetscErrorCode CreateVertexMatrix(DM dm, Mat *J)
   PetscCall(MatSetLocalToGlobalMapping(*J, ltog, ltog));
   PetscCall(MatSetDM(*J, dm));
   PetscCall(MatSetOption(*J, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_TRUE));
-  PetscCall(FillPattern(dm, &g, *J));
+  PetscCall(FillPattern(dm, &g, &r, *J));
+  PetscCall(RowsDestroy(&r));
   PetscCall(GraphDestroy(&g));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
