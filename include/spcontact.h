@@ -64,7 +64,7 @@ typedef struct {
   PetscInt  remoteElements; /* contact pairs: elements whose master facet is owned by another rank */
   PetscInt  stickPoints, slipPoints, statusChanged; /* friction: return-map status, changes since the last iterate */
   PetscReal maxStickCreep;  /* friction: max |Dg_T| over stick points in the current step */
-  PetscReal maxSlipShiftChange; /* friction: max eps_T |Delta s_T| / (mu p) over slip points at the last update */
+  PetscReal maxSlipShiftResidual; /* friction: max over slip points of eps_T |s_T' - s_T| / (mu p), s_T' one more update at the state of the last one */
   PetscReal tangentialForce[3]; /* friction: resultant tangential force on the slave bodies */
 } SPContactStats;
 

@@ -18,7 +18,7 @@ PetscErrorCode SPFrictionSetFromOptions(PetscOptionItems *PetscOptionsObject, SP
   PetscCall(PetscOptionsReal("-contact_friction_alpha", "Tangential penalty factor: eps_T = alpha_T E / h (default: -contact_alpha)", "SPContactSetFromOptions", c->alphaT, &c->alphaT, &setAlphaT));
   PetscCall(PetscOptionsReal("-contact_friction_creep_rtol", "Friction, methods that update the shift: converged only when no stuck point moves more than rtol x h in the step", "SPContactSetFromOptions", c->creepRtol, &c->creepRtol, NULL));
   PetscCall(PetscOptionsInt("-contact_friction_max_flips", "Friction: stick/slip changes of a point in a load step after which it slips for the rest of the step (a chattering point; friction.md safeguard)", "SPContactSetFromOptions", c->maxFlips, &c->maxFlips, NULL));
-  PetscCall(PetscOptionsReal("-contact_friction_slip_rtol", "Friction, methods that update the shift: converged only when the tangential shift of slipping points changes by at most rtol x mu p / eps_T", "SPContactSetFromOptions", c->slipRtol, &c->slipRtol, NULL));
+  PetscCall(PetscOptionsReal("-contact_friction_slip_rtol", "Friction, methods that update the shift: converged only when the tangential shifts of slipping points are a fixed point of their update (one more update would move none by more than rtol x mu p / eps_T)", "SPContactSetFromOptions", c->slipRtol, &c->slipRtol, NULL));
   if (!setAlphaT) c->alphaT = -1.0; /* resolved to alpha once -contact_alpha is known */
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -328,6 +328,29 @@ static PetscReal ClipToCone(SPContact c, PetscInt i)
   return lam;
 }
 
+/* A slipping point's tangential shift against its update at the same state: |s_T' - s_T| in
+   units of mu lambda_N / eps_T, with s_T' = -t_T/eps_T from the traction its new s_T gives (clipped
+   like the update). The shift tracks the traction mu p, so a change of p in the step moves it
+   although the state is already the update's fixed point: what convergence needs is that a
+   further update would not move it (F1b: one Newton iteration less in each of 2 load steps). A
+   point the new shift turns to stick is not converged. */
+static PetscReal SlipFixedPointError(SPContact c, PetscInt i, PetscReal lam)
+{
+  SPContactPoint *pt = &c->pt[i];
+  const PetscInt  nt = c->dim - 1;
+  PetscReal       y[2], t[2], s2[2] = {0, 0}, d[2] = {0, 0}, ns;
+  PetscBool       stick;
+
+  SPFrictionTraction(c, i, y, t, &stick);
+  if (stick) return PETSC_MAX_REAL;
+  for (PetscInt a = 0; a < nt; ++a) s2[a] = -t[a] / pt->epsT;
+  ns = SPNorm(nt, s2);
+  if (pt->epsT * ns > pt->geo.mu * lam)
+    for (PetscInt a = 0; a < nt; ++a) s2[a] *= pt->geo.mu * lam / (pt->epsT * ns);
+  for (PetscInt a = 0; a < nt; ++a) d[a] = s2[a] - pt->st.sT[a];
+  return pt->epsT * SPNorm(nt, d) / (pt->geo.mu * lam);
+}
+
 /* |Delta s_T| of point i against its old shift */
 static PetscReal ShiftChange(SPContact c, PetscInt i, const PetscReal old[])
 {
@@ -371,7 +394,7 @@ PetscErrorCode SPFrictionUpdate(SPContact c, PetscReal *maxDs)
     lam  = ClipToCone(c, i);
     ds   = ShiftChange(c, i, old);
     dmax = PetscMax(dmax, ds);
-    if (!stick && lam > 0.0) rmax = PetscMax(rmax, pt->epsT * ds / (pt->geo.mu * lam));
+    if (!stick && lam > 0.0) rmax = PetscMax(rmax, SlipFixedPointError(c, i, lam));
   }
   if (c->accelT) PetscCall(SPShiftAccelUpdate(c->accelT, c->accTIn, c->accTS, c->accTG, c->accTNew, &used));
   for (PetscInt i = 0; c->accelT && i < c->n; ++i) {
@@ -383,7 +406,7 @@ PetscErrorCode SPFrictionUpdate(SPContact c, PetscReal *maxDs)
   loc[0] = dmax, loc[1] = rmax;
   PetscCallMPI(MPI_Allreduce(loc, all, 2, MPIU_REAL, MPI_MAX, PetscObjectComm((PetscObject)c->dm)));
   *maxDs                        = all[0];
-  c->stats.maxSlipShiftChange   = all[1];
+  c->stats.maxSlipShiftResidual = all[1];
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -473,7 +496,7 @@ PetscBool SPFrictionConverged(SPContact c)
   if (!c->friction) return PETSC_TRUE;
   if (c->stats.statusChanged) return PETSC_FALSE;
   if (c->method->timing != SP_UPDATE_NEWTON) return PETSC_TRUE; /* none, or checked after the solve */
-  return c->creepRel <= c->creepRtol && c->stats.maxSlipShiftChange <= c->slipRtol ? PETSC_TRUE : PETSC_FALSE;
+  return c->creepRel <= c->creepRtol && c->stats.maxSlipShiftResidual <= c->slipRtol ? PETSC_TRUE : PETSC_FALSE;
 }
 
 /* Nodal friction forces: into f (the contact-point force vector, dim per point, global index

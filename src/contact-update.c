@@ -306,7 +306,7 @@ PetscErrorCode SPContactSolveUpdate(SPContact c, Vec X, PetscInt done, PetscBool
   }
   if (!doneN) PetscCall(Accelerate(c, &maxDs)); /* across the augmentations of the load step */
   PetscCall(SPFrictionUpdate(c, &dsT));
-  if (doneN && creepOK && c->stats.maxSlipShiftChange <= c->slipRtol) PetscFunctionReturn(PETSC_SUCCESS);
+  if (doneN && creepOK && c->stats.maxSlipShiftResidual <= c->slipRtol) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(Bookkeep(c, maxDs, PETSC_FALSE));
   c->stats.augmentations++;
   c->shiftUpdates++;
