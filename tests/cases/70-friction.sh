@@ -75,6 +75,25 @@ test_friction_f1b_shifted() {
   return $rc
 }
 
+# F1b at alpha 100: once the block slides steadily (steps 6-11) a slipping point's tangential shift
+# follows mu p, and the convergence test asks for its update's fixed point, not for a shift that
+# stopped moving. With the move tested, shifted converged one Newton iteration after equilibrium
+# in such steps (step 6: 9 iterations against penalty's 3). Each of steps 6-11 must take no more
+# Newton iterations than penalty's, with the same tangential force mu N = 0.003 to 1e-8.
+test_friction_slip_fixed_point() {
+  local rc=0 m
+  for m in penalty shifted; do
+    friction_run "$m" 1 -options_file input/friction_slide2d.opts -contact_method "$m" -contact_alpha 100 || return 1
+    assert_close "tangential_force_$m" "$(sval "$CASE_DIR/$m.txt" contact_tangential_force_x)" -0.003 1e-8 || rc=1
+  done
+  local per; per() { awk -F, -v s="$2" 'NR > 1 && $1 == s { n++ } END { print n - 1 }' "$CASE_DIR/$1.csv"; }
+  for s in 6 7 8 9 10 11; do
+    echo "step $s: Newton iterations penalty $(per penalty $s) shifted $(per shifted $s)"
+    assert_le "step${s}_shifted_vs_penalty" "$(per shifted $s)" "$(per penalty $s)" || rc=1
+  done
+  return $rc
+}
+
 # F1c: the 3D block driven obliquely (30 degrees) to steady sliding (travel 0.3, see the input's
 # header for why): |T| = mu N = 0.003 and T_y/T_x = tan 30 to 1e-8, every point slipping, no
 # cut-back; shifted on 1, 2 and 3 ranks (figures identical to 1e-8), penalty and alm on 1
