@@ -145,6 +145,10 @@ PETSC_EXTERN PetscErrorCode SPOutputDestroy(SPOutput *);
 /* options-files.c: before PetscInitialize; nonzero (one line printed) if one is unreadable */
 int SPCheckOptionsFiles(int, char **);
 
+/* option-defaults.c: spcontact's defaults for PETSc options, set where the user gave none */
+PETSC_EXTERN PetscErrorCode SPOptionsSetDefault(const char[], const char[]);
+PETSC_EXTERN PetscErrorCode SPOptionsIsDefault(const char[], PetscBool *);
+
 /* app.c */
 PETSC_EXTERN PetscErrorCode SPAppCreate(MPI_Comm, SPApp *);
 PETSC_EXTERN PetscErrorCode SPAppSetUp(SPApp);

@@ -41,14 +41,14 @@ static PetscErrorCode ErrorHandler(MPI_Comm comm, int line, const char *fun, con
 
 /* Options nobody read (a misspelt name, or an option for another kind of run) are reported on
    stderr after a run, one line each, unless -options_left is given (false: silent; true: PETSc's
-   own report). Defaults the code itself sets for objects a run may not create are not reported. */
+   own report). Defaults the code itself set for objects a run may not create are not reported
+   (option-defaults.c); the same options given by the user are. */
 static PetscErrorCode ReportUnusedOptions(void)
 {
-  static const char *const own[] = {"dm_plex_simplex", "petscspace_degree"};
-  PetscInt                 n;
-  char                   **names, **values;
-  PetscBool                set, mine;
-  PetscMPIInt              rank;
+  PetscInt    n;
+  char      **names, **values;
+  PetscBool   set, mine;
+  PetscMPIInt rank;
 
   PetscFunctionBeginUser;
   PetscCall(PetscOptionsHasName(NULL, NULL, "-options_left", &set));
@@ -56,8 +56,7 @@ static PetscErrorCode ReportUnusedOptions(void)
   PetscCallMPI(MPI_Comm_rank(PETSC_COMM_WORLD, &rank));
   PetscCall(PetscOptionsLeftGet(NULL, &n, &names, &values));
   for (PetscInt i = 0; i < n && rank == 0; ++i) {
-    mine = PETSC_FALSE;
-    for (size_t k = 0; k < sizeof(own) / sizeof(own[0]); ++k) mine = mine || !strcmp(names[i], own[k]);
+    PetscCall(SPOptionsIsDefault(names[i], &mine));
     if (!mine) fprintf(stderr, "spcontact: warning: option -%s was not used (misspelt, or not for this kind of run; see -help); -options_left false silences this\n", names[i]);
   }
   PetscCall(PetscOptionsLeftRestore(NULL, &n, &names, &values));

@@ -321,10 +321,8 @@ PetscErrorCode SPMeshCreate(MPI_Comm comm, DM *dm)
   PetscOptionsEnd();
   if (file[0]) PetscCall(ReadMesh(comm, file, dm));
   else {
-    PetscBool set;
     /* Debian's PETSc has no simplex generator: default the box to tensor cells (Q1) */
-    PetscCall(PetscOptionsHasName(NULL, NULL, "-dm_plex_simplex", &set));
-    if (!set) PetscCall(PetscOptionsSetValue(NULL, "-dm_plex_simplex", "0"));
+    PetscCall(SPOptionsSetDefault("-dm_plex_simplex", "0"));
     PetscCall(DMCreate(comm, dm));
     PetscCall(DMSetType(*dm, DMPLEX));
   }

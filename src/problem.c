@@ -370,11 +370,8 @@ PetscErrorCode SPProblemSetUp(SPProblem p)
 
   PetscFunctionBeginUser;
   PetscCall(DMPlexIsSimplex(p->dm, &simplex));
-  { /* PETSc's own default degree is 0; spcontact's is 1 (P1/Q1), -petscspace_degree overrides */
-    PetscBool set;
-    PetscCall(PetscOptionsHasName(NULL, NULL, "-petscspace_degree", &set));
-    if (!set) PetscCall(PetscOptionsSetValue(NULL, "-petscspace_degree", "1"));
-  }
+  /* PETSc's own default degree is 0; spcontact's is 1 (P1/Q1), -petscspace_degree overrides */
+  PetscCall(SPOptionsSetDefault("-petscspace_degree", "1"));
   PetscCall(PetscFECreateDefault(comm, p->dim, p->dim, simplex, NULL, PETSC_DETERMINE, &fe));
   PetscCall(PetscObjectSetName((PetscObject)fe, "displacement"));
   PetscCall(PetscFEGetBasisSpace(fe, &sp));

@@ -423,22 +423,6 @@ static PetscErrorCode Converged(SNES snes, PetscInt it, PetscReal xnorm, PetscRe
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* A PETSc option default for an object configured inside PETSc (GAMG's level smoothers): set only
-   when the user did not. With the default safety factor 1.1 the Chebyshev smoother's eigenvalue
-   estimate is too low on contact Jacobians and CG stops with DIVERGED_INDEFINITE_PC. The option
-   counts as used, so a run with another preconditioner does not report spcontact's own defaults
-   as unused (main.c) */
-static PetscErrorCode SetDefaultOption(const char name[], const char value[])
-{
-  PetscBool set;
-
-  PetscFunctionBeginUser;
-  PetscCall(PetscOptionsHasName(NULL, NULL, name, &set));
-  if (!set) PetscCall(PetscOptionsSetValue(NULL, name, value));
-  PetscCall(PetscOptionsHasName(NULL, NULL, name, &set)); /* marks it used */
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 PetscErrorCode SPSolverCreate(DM dm, SPProblem problem, SPContact contact, SPLog *log, SPSolver *solver)
 {
   SPSolver     s;
@@ -479,11 +463,13 @@ PetscErrorCode SPSolverCreate(DM dm, SPProblem problem, SPContact contact, SPLog
      gathers it on one rank): B2 333 -> 197 CG iterations, F2 19439 -> 15461, B4 32^3 on 2 ranks
      203 -> 180, the same Newton iterations; -pc_gamg_coarse_eq_limit overrides it */
   PetscCall(PCGAMGSetCoarseEqLim(pc, 1000));
-  PetscCall(SetDefaultOption("-mg_levels_ksp_chebyshev_esteig", "0,0.05,0,1.5"));
+  /* With PETSc's safety factor 1.1 the Chebyshev smoother's eigenvalue estimate is too low on
+     contact Jacobians and CG stops with DIVERGED_INDEFINITE_PC */
+  PetscCall(SPOptionsSetDefault("-mg_levels_ksp_chebyshev_esteig", "0,0.05,0,1.5"));
   /* Between Newton iterations only the contact blocks change: keep GAMG's aggregation and
      prolongator, recompute the Galerkin coarse operators (same iterations on B4, PC setup ~2.5x
      cheaper; -pc_gamg_reuse_interpolation false rebuilds everything) */
-  PetscCall(SetDefaultOption("-pc_gamg_reuse_interpolation", "true"));
+  PetscCall(SPOptionsSetDefault("-pc_gamg_reuse_interpolation", "true"));
   *solver = s;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -565,7 +551,7 @@ PetscErrorCode SPSolverSetFromOptions(SPSolver s)
        takes 8 to 70 % more iterations (B4 32^3 on 2 ranks: 180 -> 199, KSPSolve 7.3 -> 4.0 s),
        every Newton count of the robustness table the same within +1. Not with GMRES: F2
        (friction) then stops with DIVERGED_LINEAR_SOLVE and cuts back */
-    PetscCall(SetDefaultOption("-mg_levels_ksp_max_it", "1"));
+    PetscCall(SPOptionsSetDefault("-mg_levels_ksp_max_it", "1"));
   }
   PetscCall(SNESSetFromOptions(s->snes));
   {

@@ -127,6 +127,12 @@ test_bad_input_unused_option() {
   # spcontact's own GAMG defaults are not the user's: no report when another preconditioner runs
   spc "$CASE_DIR/lu.txt" 1 -options_file input/hertz2d.opts -ksp_type preonly -pc_type lu -output_dir "$CASE_DIR" -output_name lu || rc=1
   assert_eq warnings_other_pc "$(grep -c 'warning' "$CASE_DIR/lu.txt")" 0 || rc=1
+  # ... but the same options given by the user and not used are reported: a GAMG option with LU,
+  # the box mesh's cell type with a gmsh mesh
+  spc "$CASE_DIR/lu_user.txt" 1 -options_file input/hertz2d.opts -ksp_type preonly -pc_type lu -mg_levels_ksp_max_it 2 -dm_plex_simplex 1 -output_dir "$CASE_DIR" -output_name lu_user || rc=1
+  grep '^spcontact: warning: option -mg_levels_ksp_max_it was not used' "$CASE_DIR/lu_user.txt" || { echo "no report of the user's -mg_levels_ksp_max_it"; rc=1; }
+  grep '^spcontact: warning: option -dm_plex_simplex was not used' "$CASE_DIR/lu_user.txt" || { echo "no report of the user's -dm_plex_simplex"; rc=1; }
+  assert_eq warnings_user_options "$(grep -c 'warning' "$CASE_DIR/lu_user.txt")" 2 || rc=1
   return $rc
 }
 
