@@ -332,8 +332,8 @@ static PetscReal ClipToCone(SPContact c, PetscInt i)
    units of mu lambda_N / eps_T, with s_T' = -t_T/eps_T from the traction its new s_T gives (clipped
    like the update). The shift tracks the traction mu p, so a change of p in the step moves it
    although the state is already the update's fixed point: what convergence needs is that a
-   further update would not move it (F1b: one Newton iteration less in each of 2 load steps). A
-   point the new shift turns to stick is not converged. */
+   further update would not move it (F1b at alpha 100: 83 -> 76 Newton iterations). A point the
+   new shift turns to stick is not converged. */
 static PetscReal SlipFixedPointError(SPContact c, PetscInt i, PetscReal lam)
 {
   SPContactPoint *pt = &c->pt[i];
