@@ -148,6 +148,7 @@ int SPCheckOptionsFiles(int, char **);
 /* option-defaults.c: spcontact's defaults for PETSc options, set where the user gave none */
 PETSC_EXTERN PetscErrorCode SPOptionsSetDefault(const char[], const char[]);
 PETSC_EXTERN PetscErrorCode SPOptionsIsDefault(const char[], PetscBool *);
+PETSC_EXTERN PetscBool      SPOptionsNameAt(const char[], size_t, const char[]);
 
 /* app.c */
 PETSC_EXTERN PetscErrorCode SPAppCreate(MPI_Comm, SPApp *);

@@ -9,8 +9,20 @@
 
 #define SP_DEFAULT_MARK "spcontact_default_"
 
-/* Whether the database holds option name (with its dash), without marking it used as
-   PetscOptionsHasName would: a user's option must stay reportable as unused */
+/* In the string of PetscOptionsGetAll ("-name value -name ..."): whether an option name starts
+   at all[i] and begins with key (case-insensitive, as PETSc compares names). Reading the string
+   does not mark options used, as PetscOptionsHasName would. */
+PetscBool SPOptionsNameAt(const char all[], size_t i, const char key[])
+{
+  size_t j = 0;
+
+  if (i > 0 && all[i - 1] != ' ') return PETSC_FALSE;
+  while (key[j] && all[i + j] && tolower((unsigned char)all[i + j]) == tolower((unsigned char)key[j])) j++;
+  return key[j] ? PETSC_FALSE : PETSC_TRUE;
+}
+
+/* Whether the database holds option name (with its dash), without marking it used: a user's
+   option must stay reportable as unused */
 static PetscErrorCode Given(const char name[], PetscBool *given)
 {
   const size_t n = strlen(name);
@@ -18,13 +30,9 @@ static PetscErrorCode Given(const char name[], PetscBool *given)
 
   PetscFunctionBeginUser;
   *given = PETSC_FALSE;
-  PetscCall(PetscOptionsGetAll(NULL, &all)); /* "-name value -name ..." */
-  for (size_t i = 0; all[i] && !*given; ++i) {
-    size_t j = 0;
-    if (i > 0 && all[i - 1] != ' ') continue;
-    while (j < n && all[i + j] && tolower((unsigned char)all[i + j]) == tolower((unsigned char)name[j])) j++;
-    if (j == n && (all[i + n] == ' ' || !all[i + n])) *given = PETSC_TRUE;
-  }
+  PetscCall(PetscOptionsGetAll(NULL, &all));
+  for (size_t i = 0; all[i] && !*given; ++i)
+    if (SPOptionsNameAt(all, i, name) && (all[i + n] == ' ' || !all[i + n])) *given = PETSC_TRUE;
   PetscCall(PetscFree(all));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -60,11 +60,9 @@ static PetscErrorCode RegionsGiven(MPI_Comm comm, PetscBool given[])
   for (PetscInt k = 0; k < SP_MAX_MATERIALS; ++k) given[k] = PETSC_FALSE;
   PetscCall(PetscOptionsGetAll(NULL, &all)); /* "-name value -name ..." */
   for (size_t i = 0; all[i]; ++i) {
-    size_t j = 0, d;
+    size_t j, d;
     long   k = 0;
-    if (i > 0 && all[i - 1] != ' ') continue;
-    while (j < n && all[i + j] && tolower((unsigned char)all[i + j]) == key[j]) j++;
-    if (j < n) continue;
+    if (!SPOptionsNameAt(all, i, key)) continue;
     for (d = i + n; isdigit((unsigned char)all[d]) && k < 1000000; ++d) k = 10 * k + (all[d] - '0');
     if (d == i + n || all[d] != '_') continue; /* not -material_<k>_ */
     if (k >= SP_MAX_MATERIALS) {

@@ -79,17 +79,19 @@ test_friction_f1b_shifted() {
 # follows mu p, and the convergence test asks for its update's fixed point, not for a shift that
 # stopped moving. With the move tested, shifted converged one Newton iteration after equilibrium
 # in such steps (step 6: 9 iterations against penalty's 3). Each of steps 6-11 must take no more
-# Newton iterations than penalty's, with the same tangential force mu N = 0.003 to 1e-8.
+# Newton iterations than penalty's, with the same tangential force mu N = 0.003 to 1e-8; shifted
+# on 1, 2 and 3 ranks.
 test_friction_slip_fixed_point() {
-  local rc=0 m
-  for m in penalty shifted; do
-    friction_run "$m" 1 -options_file input/friction_slide2d.opts -contact_method "$m" -contact_alpha 100 || return 1
-    assert_close "tangential_force_$m" "$(sval "$CASE_DIR/$m.txt" contact_tangential_force_x)" -0.003 1e-8 || rc=1
+  local rc=0 run
+  for run in penalty:1 shifted:1 shifted:2 shifted:3; do
+    local m=${run%:*} np=${run#*:}
+    friction_run "${m}_np$np" "$np" -options_file input/friction_slide2d.opts -contact_method "$m" -contact_alpha 100 || return 1
+    assert_close "tangential_force_${m}_np$np" "$(sval "$CASE_DIR/${m}_np$np.txt" contact_tangential_force_x)" -0.003 1e-8 || rc=1
   done
   local per; per() { awk -F, -v s="$2" 'NR > 1 && $1 == s { n++ } END { print n - 1 }' "$CASE_DIR/$1.csv"; }
   for s in 6 7 8 9 10 11; do
-    echo "step $s: Newton iterations penalty $(per penalty $s) shifted $(per shifted $s)"
-    assert_le "step${s}_shifted_vs_penalty" "$(per shifted $s)" "$(per penalty $s)" || rc=1
+    echo "step $s: Newton iterations penalty $(per penalty_np1 $s) shifted $(per shifted_np1 $s) / $(per shifted_np2 $s) / $(per shifted_np3 $s) on 1 / 2 / 3 ranks"
+    for np in 1 2 3; do assert_le "step${s}_shifted_np${np}_vs_penalty" "$(per "shifted_np$np" $s)" "$(per penalty_np1 $s)" || rc=1; done
   done
   return $rc
 }
