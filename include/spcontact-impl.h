@@ -234,6 +234,7 @@ struct _n_SPContact {
   PetscReal       gapRtol, lengthScale; /* gapTol = gapRtol x lengthScale unless -contact_gap_tol is given */
   PetscBool       gapTolSet;
   PetscReal       mu, alphaT, creepRtol, slipRtol; /* friction (-contact_friction_*) */
+  PetscBool       stickHold;                       /* -contact_friction_stick_hold (contact-friction.c) */
   PetscReal       obMu[SP_MAX_OBSTACLES];          /* per obstacle (default mu) */
   PetscBool       friction;                        /* some obstacle or pair has mu > 0 */
   PetscReal       creepRel;                        /* max stick creep in the step / h, last bookkeeping */
@@ -315,7 +316,7 @@ PETSC_EXTERN void           SPFrictionTraction(SPContact, PetscInt, PetscReal[],
 PETSC_EXTERN PetscErrorCode SPFrictionAddResidual(SPContact);
 PETSC_EXTERN PetscErrorCode SPFrictionAddJacobian(SPContact, Mat);
 PETSC_EXTERN PetscErrorCode SPFrictionAnchor(SPContact, PetscBool);
-PETSC_EXTERN PetscErrorCode SPFrictionUpdate(SPContact, PetscReal *);
+PETSC_EXTERN PetscErrorCode SPFrictionUpdate(SPContact, PetscBool, PetscReal *);
 PETSC_EXTERN void           SPFrictionStepStart(SPContact);
 PETSC_EXTERN PetscReal      SPFrictionStepLimit(SPContact);
 PETSC_EXTERN PetscErrorCode SPFrictionBookkeep(SPContact, PetscBool);

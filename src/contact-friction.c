@@ -18,6 +18,7 @@ PetscErrorCode SPFrictionSetFromOptions(PetscOptionItems *PetscOptionsObject, SP
   PetscCall(PetscOptionsReal("-contact_friction_alpha", "Tangential penalty factor: eps_T = alpha_T E / h (default: -contact_alpha)", "SPContactSetFromOptions", c->alphaT, &c->alphaT, &setAlphaT));
   PetscCall(PetscOptionsReal("-contact_friction_creep_rtol", "Friction, methods that update the shift: converged only when no stuck point moves more than rtol x h in the step", "SPContactSetFromOptions", c->creepRtol, &c->creepRtol, NULL));
   PetscCall(PetscOptionsInt("-contact_friction_max_flips", "Friction: stick/slip changes of a point in a load step after which it slips for the rest of the step (a chattering point; friction.md safeguard)", "SPContactSetFromOptions", c->maxFlips, &c->maxFlips, NULL));
+  PetscCall(PetscOptionsBool("-contact_friction_stick_hold", "Friction, shifted: once every stuck point has crept at most creep_rtol h in the step and creep_rtol h_c in all (committed creep included), stuck points keep their tangential shifts (an update would only perturb a converged state and cost a Newton iteration)", "SPContactSetFromOptions", c->stickHold, &c->stickHold, NULL));
   PetscCall(PetscOptionsReal("-contact_friction_slip_rtol", "Friction, methods that update the shift: converged only when the tangential shifts of slipping points are a fixed point of their update (one more update would move none by more than rtol x mu p / eps_T)", "SPContactSetFromOptions", c->slipRtol, &c->slipRtol, NULL));
   if (!setAlphaT) c->alphaT = -1.0; /* resolved to alpha once -contact_alpha is known */
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -359,20 +360,53 @@ static PetscReal ShiftChange(SPContact c, PetscInt i, const PetscReal old[])
   return SPNorm(c->dim - 1, d);
 }
 
+/* Whether every stuck point of the evaluated state meets the creep test of the Newton convergence
+   test (at most creep_rtol h in the step) and has crept at most creep_rtol h_c counting the creep
+   committed in the steps before (so that the leftovers of many steps do not add up past it),
+   collective: their tangential shifts then hold, as the normal ones do once the gaps hold */
+static PetscErrorCode StickCreepHolds(SPContact c, PetscBool *holds)
+{
+  const PetscInt dim = c->dim;
+  PetscReal      r[2] = {0.0, 0.0}, all[2];
+
+  PetscFunctionBeginUser;
+  for (PetscInt i = 0; i < c->n; ++i) {
+    const SPContactPoint *pt = &c->pt[i];
+    PetscReal             y[2], t[2], dg[3] = {0, 0, 0};
+    PetscBool             stick;
+    if (pt->geo.mu <= 0.0 || !pt->st.active || !SPContactPointActive(c, i)) continue;
+    SPFrictionTraction(c, i, y, t, &stick);
+    if (!stick) continue;
+    for (PetscInt a = 0; a < dim - 1; ++a)
+      for (PetscInt d = 0; d < dim; ++d) dg[d] += pt->geo.dgT[a] * pt->st.T[a][d];
+    r[0] = PetscMax(r[0], SPNorm(dim, dg) / pt->h);
+    for (PetscInt d = 0; d < dim; ++d) dg[d] += pt->st.creep[d];
+    r[1] = PetscMax(r[1], SPNorm(dim, dg) / c->lengthScale);
+  }
+  PetscCallMPI(MPI_Allreduce(r, all, 2, MPIU_REAL, MPI_MAX, PetscObjectComm((PetscObject)c->dm)));
+  *holds = all[0] <= c->creepRtol && all[1] <= c->creepRtol ? PETSC_TRUE : PETSC_FALSE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* The tangential shift update s_T <- -t_T/eps_T of the points active in the previous and the
    current iterate (open points: s_T = 0), then the clip eps_T |s_T| <= mu lambda_N with
    lambda_N = -eps s_N (after the normal update). With -contact_shift_accel anderson the stuck
    points' updates (s_T <- s_T + Dg_T: the same affine fixed point as the normal one) get their own
-   Anderson step (contact-accel.c), then the clip. *maxDs: max |Delta s_T| (collective max). */
-PetscErrorCode SPFrictionUpdate(SPContact c, PetscReal *maxDs)
+   Anderson step (contact-accel.c), then the clip. With mayHold (the in-Newton update at a boundary
+   where the normal shifts hold) and -contact_friction_stick_hold, once every stuck point's creep
+   holds its tolerance stuck points keep their shifts: an update would only perturb a converged
+   state, and the residual it raises took another Newton iteration. *maxDs: max |Delta s_T|
+   (collective max). */
+PetscErrorCode SPFrictionUpdate(SPContact c, PetscBool mayHold, PetscReal *maxDs)
 {
   const PetscInt nt = c->dim - 1;
   PetscReal      dmax = 0.0, rmax = 0.0, all[2], loc[2];
-  PetscBool      used = PETSC_FALSE;
+  PetscBool      used = PETSC_FALSE, creepHolds = PETSC_FALSE;
 
   PetscFunctionBeginUser;
   *maxDs = 0.0;
   if (!c->friction) PetscFunctionReturn(PETSC_SUCCESS);
+  if (mayHold && c->stickHold) PetscCall(StickCreepHolds(c, &creepHolds));
   for (PetscInt i = 0; i < c->n; ++i) {
     SPContactPoint *pt = &c->pt[i];
     PetscReal       y[2], t[2], old[2] = {pt->st.sT[0], pt->st.sT[1]}, lam, ds;
@@ -381,8 +415,9 @@ PetscErrorCode SPFrictionUpdate(SPContact c, PetscReal *maxDs)
     if (pt->geo.mu <= 0.0) continue;
     if (activeNow && pt->st.active) {
       SPFrictionTraction(c, i, y, t, &stick);
-      for (PetscInt a = 0; a < nt; ++a) pt->st.sT[a] = -t[a] / pt->epsT;
-      rule = PETSC_TRUE;
+      if (!(stick && creepHolds))
+        for (PetscInt a = 0; a < nt; ++a) pt->st.sT[a] = -t[a] / pt->epsT;
+      rule = stick && creepHolds ? PETSC_FALSE : PETSC_TRUE;
     } else if (!activeNow) pt->st.sT[0] = pt->st.sT[1] = 0.0;
     if (c->accelT && rule && stick) { /* the clip after the accelerated step */
       for (PetscInt a = 0; a < nt; ++a) {

@@ -200,7 +200,9 @@ PetscErrorCode SPContactNewtonUpdate(SPContact c, Vec W, PetscBool *changed)
     PetscCall(SPFrictionSettled(c, &fsettled));
     fupdate = fsettled || !c->settled ? PETSC_TRUE : PETSC_FALSE;
   }
-  if (fupdate) PetscCall(SPFrictionUpdate(c, &dsT));
+  /* stuck points may keep their shifts only where the normal ones hold: a normal update moves them
+     after the test (F2 rigid edge: creep 6.2e-13 > 1e-10 h_c = 4.9e-13 when it did not count) */
+  if (fupdate) PetscCall(SPFrictionUpdate(c, applies ? PETSC_FALSE : PETSC_TRUE, &dsT));
   else PetscCall(ResetInNewton(c, c->accelT)); /* the stick/slip set moved: a new map */
   PetscCall(Bookkeep(c, maxDs, PETSC_TRUE));
   c->setSettled = c->stats.activeChanged == 0 ? PETSC_TRUE : PETSC_FALSE;
@@ -305,7 +307,7 @@ PetscErrorCode SPContactSolveUpdate(SPContact c, Vec X, PetscInt done, PetscBool
     Record(c, i, old, SPContactPointActive(c, i));
   }
   if (!doneN) PetscCall(Accelerate(c, &maxDs)); /* across the augmentations of the load step */
-  PetscCall(SPFrictionUpdate(c, &dsT));
+  PetscCall(SPFrictionUpdate(c, PETSC_FALSE, &dsT)); /* alm lost with the hold: F1b 67 -> 70 at alpha 100 */
   if (doneN && creepOK && c->stats.maxSlipShiftResidual <= c->slipRtol) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(Bookkeep(c, maxDs, PETSC_FALSE));
   c->stats.augmentations++;

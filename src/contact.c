@@ -19,6 +19,7 @@ PetscErrorCode SPContactCreate(DM dm, SPProblem problem, PetscLogEvent search, S
   c->alpha   = 10.0;
   c->gapRtol = 1e-10;
   c->creepRtol = 1e-10;
+  c->stickHold = PETSC_TRUE;
   c->slipRtol  = 1e-8;
   c->maxFlips  = 3;
   c->stepCap = 1.0;
@@ -454,7 +455,7 @@ PetscErrorCode SPContactView(SPContact c, PetscViewer v)
   PetscCall(PetscViewerASCIIPrintf(v, "contact_friction_mu %g\ncontact_friction %s\n", (double)c->mu, c->friction ? "yes" : "no"));
   if (c->friction) {
     PetscCall(PetscViewerASCIIPrintf(v, "contact_friction_alpha %g\ncontact_stick_points %" PetscInt_FMT "\ncontact_slip_points %" PetscInt_FMT "\n", (double)c->alphaT, st.stickPoints, st.slipPoints));
-    PetscCall(PetscViewerASCIIPrintf(v, "contact_max_stick_creep %.10e\n", (double)st.maxStickCreep));
+    PetscCall(PetscViewerASCIIPrintf(v, "contact_max_stick_creep %.10e\ncontact_friction_stick_hold %s\n", (double)st.maxStickCreep, c->stickHold ? "yes" : "no"));
     PetscCall(PetscViewerASCIIPrintf(v, "contact_tangential_force_x %.12e\ncontact_tangential_force_y %.12e\ncontact_tangential_force_z %.12e\n", (double)st.tangentialForce[0], (double)st.tangentialForce[1], (double)st.tangentialForce[2]));
   }
   PetscFunctionReturn(PETSC_SUCCESS);
