@@ -360,28 +360,40 @@ static PetscReal ShiftChange(SPContact c, PetscInt i, const PetscReal old[])
   return SPNorm(c->dim - 1, d);
 }
 
+/* Point i's creep if it sticks: this step's, relative to its h, and in all (the committed creep
+   plus this step's, a length) */
+static void Creep(SPContact c, PetscInt i, PetscReal *step, PetscReal *total)
+{
+  const SPContactPoint *pt  = &c->pt[i];
+  const PetscInt        dim = c->dim;
+  PetscReal             dg[3] = {0, 0, 0};
+
+  for (PetscInt a = 0; a < dim - 1; ++a)
+    for (PetscInt d = 0; d < dim; ++d) dg[d] += pt->geo.dgT[a] * pt->st.T[a][d];
+  *step = SPNorm(dim, dg) / pt->h;
+  for (PetscInt d = 0; d < dim; ++d) dg[d] += pt->st.creep[d];
+  *total = SPNorm(dim, dg);
+}
+
 /* Whether every stuck point of the evaluated state meets the creep test of the Newton convergence
    test (at most creep_rtol h in the step) and has crept at most creep_rtol h_c counting the creep
    committed in the steps before (so that the leftovers of many steps do not add up past it),
    collective: their tangential shifts then hold, as the normal ones do once the gaps hold */
 static PetscErrorCode StickCreepHolds(SPContact c, PetscBool *holds)
 {
-  const PetscInt dim = c->dim;
-  PetscReal      r[2] = {0.0, 0.0}, all[2];
+  PetscReal r[2] = {0.0, 0.0}, all[2];
 
   PetscFunctionBeginUser;
   for (PetscInt i = 0; i < c->n; ++i) {
     const SPContactPoint *pt = &c->pt[i];
-    PetscReal             y[2], t[2], dg[3] = {0, 0, 0};
+    PetscReal             y[2], t[2], step, total;
     PetscBool             stick;
     if (pt->geo.mu <= 0.0 || !pt->st.active || !SPContactPointActive(c, i)) continue;
     SPFrictionTraction(c, i, y, t, &stick);
     if (!stick) continue;
-    for (PetscInt a = 0; a < dim - 1; ++a)
-      for (PetscInt d = 0; d < dim; ++d) dg[d] += pt->geo.dgT[a] * pt->st.T[a][d];
-    r[0] = PetscMax(r[0], SPNorm(dim, dg) / pt->h);
-    for (PetscInt d = 0; d < dim; ++d) dg[d] += pt->st.creep[d];
-    r[1] = PetscMax(r[1], SPNorm(dim, dg) / c->lengthScale);
+    Creep(c, i, &step, &total);
+    r[0] = PetscMax(r[0], step);
+    r[1] = PetscMax(r[1], total / c->lengthScale);
   }
   PetscCallMPI(MPI_Allreduce(r, all, 2, MPIU_REAL, MPI_MAX, PetscObjectComm((PetscObject)c->dm)));
   *holds = all[0] <= c->creepRtol && all[1] <= c->creepRtol ? PETSC_TRUE : PETSC_FALSE;
@@ -482,7 +494,7 @@ PetscErrorCode SPFrictionBookkeep(SPContact c, PetscBool compare)
   for (PetscInt i = 0; i < c->n; ++i) {
     SPContactPoint *pt = &c->pt[i];
     SPPointStatus   st;
-    PetscReal       y[2], t[2], dg[3] = {0, 0, 0};
+    PetscReal       y[2], t[2], step, total;
     PetscBool       stick;
     if (!pt->st.active) st = SP_POINT_OPEN;
     else if (pt->geo.mu <= 0.0) st = SP_POINT_STICK; /* closed, frictionless */
@@ -507,11 +519,9 @@ PetscErrorCode SPFrictionBookkeep(SPContact c, PetscBool compare)
     if (pt->geo.mu <= 0.0 || st == SP_POINT_OPEN) continue;
     n[st == SP_POINT_STICK ? 0 : 1]++;
     if (st != SP_POINT_STICK) continue;
-    for (PetscInt a = 0; a < dim - 1; ++a)
-      for (PetscInt d = 0; d < dim; ++d) dg[d] += pt->geo.dgT[a] * pt->st.T[a][d];
-    r[0] = PetscMax(r[0], SPNorm(dim, dg) / pt->h);
-    for (PetscInt d = 0; d < dim; ++d) dg[d] += pt->st.creep[d];
-    r[1] = PetscMax(r[1], SPNorm(dim, dg));
+    Creep(c, i, &step, &total);
+    r[0] = PetscMax(r[0], step);
+    r[1] = PetscMax(r[1], total);
   }
   PetscCallMPI(MPI_Allreduce(n, nall, 3, MPIU_INT, MPI_SUM, PetscObjectComm((PetscObject)c->dm)));
   PetscCallMPI(MPI_Allreduce(r, rall, 2, MPIU_REAL, MPI_MAX, PetscObjectComm((PetscObject)c->dm)));
