@@ -95,9 +95,9 @@ CASES
 # With friction Anderson also steps the stuck points' tangential shifts (s_T <- s_T + Dg_T, the
 # same affine fixed point). F4, the frictional two-pass patch at alpha 100: the plain update takes
 # 136 Newton iterations, Anderson 37 (measured; 177 and 50 before -contact_friction_stick_hold);
-# both pass the patch (pressure and tangential
-# traction at every point within 1e-6, creep <= 1e-10 h, force Q to 1e-8); 1, 2 and 3 ranks agree
-# (figures to 1e-8, Newton iterations within one).
+# both pass the patch (pressure and tangential traction at every point within 1e-6, creep <=
+# 1e-10 h, force Q to 1e-8); 1, 2 and 3 ranks agree (figures to 1e-8, Newton iterations within
+# one).
 test_accel_friction_patch() {
   local rc=0 np
   for np in 1 2 3; do
