@@ -455,7 +455,7 @@ PetscErrorCode SPContactView(SPContact c, PetscViewer v)
   PetscCall(PetscViewerASCIIPrintf(v, "contact_friction_mu %g\ncontact_friction %s\n", (double)c->mu, c->friction ? "yes" : "no"));
   if (c->friction) {
     PetscCall(PetscViewerASCIIPrintf(v, "contact_friction_alpha %g\ncontact_stick_points %" PetscInt_FMT "\ncontact_slip_points %" PetscInt_FMT "\n", (double)c->alphaT, st.stickPoints, st.slipPoints));
-    PetscCall(PetscViewerASCIIPrintf(v, "contact_max_stick_creep %.10e\ncontact_friction_stick_hold %s\n", (double)st.maxStickCreep, c->stickHold ? "yes" : "no"));
+    PetscCall(PetscViewerASCIIPrintf(v, "contact_max_stick_creep %.10e\ncontact_friction_stick_hold %s\n", (double)st.maxStickCreep, c->stickHold && c->method->timing == SP_UPDATE_NEWTON ? "yes" : "no")); /* in effect: shifted only */
     PetscCall(PetscViewerASCIIPrintf(v, "contact_tangential_force_x %.12e\ncontact_tangential_force_y %.12e\ncontact_tangential_force_z %.12e\n", (double)st.tangentialForce[0], (double)st.tangentialForce[1], (double)st.tangentialForce[2]));
   }
   PetscFunctionReturn(PETSC_SUCCESS);
