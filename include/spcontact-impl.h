@@ -308,6 +308,7 @@ PETSC_EXTERN PetscErrorCode SPContactRecoverForces(SPContact);
 PETSC_EXTERN PetscErrorCode SPContactFacetVertices(DM, PetscInt, PetscInt *, PetscInt[], PetscReal[]);
 /* contact-friction.c */
 #define SP_FRIC_MAXD (3 * (1 + 2 * SP_FACET_MAXV))
+#define SP_CONE_EDGE_RTOL 1e-10 /* |y| within this of mu p: on the cone's edge (SlipsOnEdge) */
 PETSC_EXTERN PetscErrorCode SPFrictionSetFromOptions(PetscOptionItems *, SPContact);
 PETSC_EXTERN PetscErrorCode SPFrictionSetUp(SPContact);
 PETSC_EXTERN void           SPFrictionKinematics(SPContact, PetscInt);

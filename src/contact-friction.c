@@ -135,8 +135,21 @@ PetscErrorCode SPFrictionElementDofs(SPContact c, PetscInt i, PetscInt *nd, Pets
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Whether point i, stuck by the return map with trial y and cone radius r, sits on the cone's edge (|y| = mu p to
+   SP_CONE_EDGE_RTOL) and slipped at the last converged step. At a load step's first iterate every
+   point that slipped sits there (its trial is its committed traction, mu p), and the return map
+   calls it stuck: its stick tangent then held it against the drive, and its change to slip at the
+   next iterate cost an iteration more (F1b's steady sliding took 3 Newton iterations per load step,
+   now 1). SPFrictionTraction calls it slipping: the slip tangent and step control, in its
+   committed direction; its traction (t = y, on the cone) is the same either way. */
+static PetscBool SlipsOnEdge(SPContact c, PetscInt i, const PetscReal y[], PetscReal r)
+{
+  return c->saved[i].status == SP_POINT_SLIP && SPNorm(c->dim - 1, y) >= (1.0 - SP_CONE_EDGE_RTOL) * r ? PETSC_TRUE : PETSC_FALSE;
+}
+
 /* Trial y and returned traction t of point i at the evaluated state; open points carry none.
-   A point that changed stick/slip more than 3 times in the step keeps its status. */
+   A point on the cone's edge that slipped in the last step slips (SlipsOnEdge). A point that
+   changed stick/slip more than 3 times in the step keeps its status. */
 void SPFrictionTraction(SPContact c, PetscInt i, PetscReal y[], PetscReal t[], PetscBool *stick)
 {
   SPContactPoint *pt = &c->pt[i];
@@ -149,6 +162,7 @@ void SPFrictionTraction(SPContact c, PetscInt i, PetscReal y[], PetscReal t[], P
   if (pt->geo.mu <= 0.0 || k <= 0.0 || !pt->st.anchored || pt->geo.anchorLost) return;
   for (PetscInt a = 0; a < nt; ++a) y[a] = -pt->epsT * (pt->geo.dgT[a] + pt->st.sT[a]);
   *stick = SPCoulombReturn(nt, y, pt->geo.mu * p, t);
+  if (*stick && SlipsOnEdge(c, i, y, pt->geo.mu * p)) *stick = PETSC_FALSE;
   if (pt->st.flips > c->maxFlips) { /* a chattering point slips for the rest of the step */
     const PetscReal ny = SPNorm(nt, y), r = pt->geo.mu * p, nd = SPNorm(nt, pt->st.dir);
     /* ... and keeps the direction of its last slip (a reversal is a status change too): inside
@@ -606,8 +620,9 @@ void SPFrictionStepStart(SPContact c)
     c->slipStart[3 * i] = c->slipStart[3 * i + 1] = c->slipStart[3 * i + 2] = 0.0;
     if (!c->friction) continue;
     SPFrictionTraction(c, i, y, t, &stick);
-    /* return-map slip only: a chattering point slips in its frozen direction (y = t), whatever y */
-    if (stick || (t[0] == 0.0 && t[1] == 0.0) || SPNorm(nt, y) <= SPNorm(nt, t)) continue;
+    /* slipping points, but not a chattering point slipping in its frozen direction (y = t) */
+    if (stick || (t[0] == 0.0 && t[1] == 0.0)) continue;
+    if (c->pt[i].st.flips > c->maxFlips && SPNorm(nt, y) <= SPNorm(nt, t)) continue;
     for (PetscInt a = 0; a < nt; ++a) c->slipStart[3 * i + a] = y[a];
     c->slipStart[3 * i + 2] = SPNorm(nt, t);
   }
