@@ -135,13 +135,13 @@ PetscErrorCode SPFrictionElementDofs(SPContact c, PetscInt i, PetscInt *nd, Pets
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Whether point i, stuck by the return map with trial y and cone radius r, sits on the cone's edge (|y| = mu p to
-   SP_CONE_EDGE_RTOL) and slipped at the last converged step. At a load step's first iterate every
-   point that slipped sits there (its trial is its committed traction, mu p), and the return map
-   calls it stuck: its stick tangent then held it against the drive, and its change to slip at the
-   next iterate cost an iteration more (F1b's steady sliding took 3 Newton iterations per load step,
-   now 1). SPFrictionTraction calls it slipping: the slip tangent and step control, in its
-   committed direction; its traction (t = y, on the cone) is the same either way. */
+/* Whether point i, stuck by the return map with trial y and cone radius r, sits on the cone's
+   edge (|y| = r to SP_CONE_EDGE_RTOL) and slipped at the last converged step. At a load step's
+   first iterate every point that slipped sits there (its trial is its committed traction, mu p),
+   and the return map calls it stuck: its stick tangent then held it against the drive, and its
+   change to slip at the next iterate cost an iteration more (F1b's steady sliding took 3 Newton
+   iterations per load step, now 1). SPFrictionTraction calls it slipping: the slip tangent and
+   step control, in its committed direction; its traction (t = y, on the cone) is the same. */
 static PetscBool SlipsOnEdge(SPContact c, PetscInt i, const PetscReal y[], PetscReal r)
 {
   return c->saved[i].status == SP_POINT_SLIP && SPNorm(c->dim - 1, y) >= (1.0 - SP_CONE_EDGE_RTOL) * r ? PETSC_TRUE : PETSC_FALSE;
