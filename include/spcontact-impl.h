@@ -215,6 +215,8 @@ typedef struct {
   PetscReal       epsT;            /* tangential penalty alpha_T E / h */
   PetscReal       t[2];            /* tangential traction of the last evaluated state (basis T) */
   PetscBool       stick;           /* its return-map status */
+  PetscInt        keepFacet;       /* pairs: master facet gid of the last Newton iterate in this step
+                                      (-1: none), kept while it stays a near-best candidate */
 } SPContactPoint;
 
 struct _n_SPContact {

@@ -25,10 +25,20 @@
    convex edge or corner belong to one facet. A projection beyond a free side of the master surface
    (a vertex/edge of one master facet only, within the pair) by more than SP_PAIR_END_TOL (in the
    same parameter units) is off the surface: the point has no contact element. A quad facet whose
-   projection fails (see kernels/contact-facet.h) is not a candidate. */
+   projection fails (see kernels/contact-facet.h) is not a candidate.
+
+   Hysteresis at a vertex or edge. Near a master vertex a penetrated slave point projects inside
+   both facets that share it, with gaps of either sign, and the nearest one can change from one
+   Newton iterate to the next; each change moves the point back: a 2-cycle that cut-backs repeat
+   (F2's rigid-edge set-up on halved contact meshes, load 0.925). So within a load step the facet
+   of the last Newton iterate (keepFacet) stays the point's facet while its unclamped projection
+   lies within SP_PAIR_END_TOL of it (the extended facet, as for the gap) and its distance is
+   within SP_PAIR_KEEP_RTOL h of the nearest. Both are node-to-segment gaps of the point; they
+   differ by the kink at the vertex times the distance to it. */
 #include <spcontact-impl.h>
 
 #define SP_PAIR_END_TOL 1e-2
+#define SP_PAIR_KEEP_RTOL 1e-4 /* the kept facet's distance may exceed the nearest by this x h */
 
 
 static PetscErrorCode PairSetFromOptions(MPI_Comm comm, PetscInt k, PetscReal mu, SPPair *p, PetscBool *found)
@@ -498,20 +508,23 @@ static PetscReal BoxDistance(const SPMasterFacet *m, PetscInt dim, const PetscRe
 PetscErrorCode SPContactPairsProject(SPContact c, PetscInt i, PetscInt *facet, PetscReal *xi, PetscReal *g, PetscReal n[])
 {
   const PetscReal *x = c->pt[i].geo.x;
-  PetscInt         best = -1;
-  PetscReal        db = 0.0, eb = 0.0, xb[2] = {0.0, 0.0};
+  PetscInt         best = -1, kept = -1;
+  PetscReal        db = 0.0, eb = 0.0, xb[2] = {0.0, 0.0}, dk = 0.0, xk[2] = {0.0, 0.0};
 
   PetscFunctionBeginUser;
   *facet = SP_ELEM_NONE;
   for (PetscInt f = 0; f < c->nmf; ++f) {
     const SPMasterFacet *m = &c->mf[f];
     PetscReal            t[2], d, e;
+    PetscBool            keep = m->gid == c->pt[i].keepFacet ? PETSC_TRUE : PETSC_FALSE;
     if (!(c->pt[i].pairMask & ((PetscInt)1 << m->pair))) continue;
-    if (best >= 0 && BoxDistance(m, c->dim, x) > db + 1e-9 * (1.0 + db)) continue; /* cannot win (Better's tolerance is 1e-10) */
+    if (!keep && best >= 0 && BoxDistance(m, c->dim, x) > db + 1e-9 * (1.0 + db)) continue; /* cannot win (Better's tolerance is 1e-10) */
     if (!SPPairCandidate(c->dim, m->nv, m->x, x, t, &d, &e)) continue;
+    if (keep && e <= SP_PAIR_END_TOL) kept = f, dk = d, xk[0] = t[0], xk[1] = t[1];
     if (Better(c, d, e, f, db, eb, best)) best = f, db = d, eb = e, xb[0] = t[0], xb[1] = t[1];
   }
   if (best < 0) PetscFunctionReturn(PETSC_SUCCESS);
+  if (kept >= 0 && kept != best && dk <= db + SP_PAIR_KEEP_RTOL * c->pt[i].h) best = kept, xb[0] = xk[0], xb[1] = xk[1];
   for (PetscInt s = 0; s < c->mf[best].nv; ++s)
     if (c->mf[best].freeSide[s] && SPPairBeyond(c->dim, c->mf[best].nv, xb, s) > SP_PAIR_END_TOL) PetscFunctionReturn(PETSC_SUCCESS);
   {
