@@ -332,6 +332,7 @@ PETSC_EXTERN PetscErrorCode SPContactPairsCheckLabels(SPContact);
 PETSC_EXTERN PetscErrorCode SPContactPairsSetUp(SPContact);
 PETSC_EXTERN PetscErrorCode SPContactPairsExchange(SPContact, const PetscScalar[]);
 PETSC_EXTERN PetscErrorCode SPContactPairsProject(SPContact, PetscInt, PetscInt *, PetscReal *, PetscReal *, PetscReal[]);
+PETSC_EXTERN void           SPContactPairsKeepFacets(SPContact);
 PETSC_EXTERN PetscErrorCode SPContactPairsDestroy(SPContact);
 PETSC_EXTERN PetscBool      SPContactGeometricTangent(SPContact);
 PETSC_EXTERN PetscErrorCode SPOutputWriteXdmf(SPOutput, PetscBool);

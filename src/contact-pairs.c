@@ -503,6 +503,13 @@ static PetscReal BoxDistance(const SPMasterFacet *m, PetscInt dim, const PetscRe
   return PetscSqrtReal(d2);
 }
 
+/* At a Newton boundary: each point's facet at the evaluated iterate becomes the facet it keeps near
+   a vertex (the hysteresis at the top) */
+void SPContactPairsKeepFacets(SPContact c)
+{
+  for (PetscInt i = 0; i < c->n; ++i) c->pt[i].keepFacet = c->pt[i].geo.elem >= 0 ? c->mf[c->pt[i].geo.elem].gid : -1;
+}
+
 /* Closest-point projection of point i (deformed position geo.x) onto the master facets of its
    pairs: facet (or SP_ELEM_NONE), parameter, gap and normal (see the rule at the top) */
 PetscErrorCode SPContactPairsProject(SPContact c, PetscInt i, PetscInt *facet, PetscReal *xi, PetscReal *g, PetscReal n[])

@@ -188,8 +188,7 @@ PetscErrorCode SPContactNewtonUpdate(SPContact c, Vec W, PetscBool *changed)
 
   PetscFunctionBeginUser;
   PetscCall(SPContactEvaluate(c, W));
-  /* the facet of each pair point at this iterate, kept by SPContactPairsProject near a vertex */
-  for (PetscInt i = 0; i < c->n; ++i) c->pt[i].keepFacet = c->pt[i].geo.elem >= 0 ? c->mf[c->pt[i].geo.elem].gid : -1;
+  SPContactPairsKeepFacets(c);
   PetscCall(ShiftUpdateApplies(c, &applies, &settled));
   /* A step cut by the tangential step control (friction only) ends at a point that no Newton step
      produced: updating the shifts there (normal and tangential) would lock its imbalance in */
