@@ -185,6 +185,8 @@ typedef struct {
   PetscReal     tCommit[3];    /* tangential traction at the last converged step (vector) */
   SPPointStatus status;        /* open / stick / slip (frictionless: open or stick = closed) */
   PetscBool     active;        /* g + sN <= 0 at the last bookkeeping */
+  PetscBool     heldStick;     /* stuck before this boundary's update (its branch held with `held`) */
+  PetscBool     held;          /* active before this boundary's shift update: its linear branch is held (branchHold) */
   PetscInt      inactiveCount; /* consecutive inactive iterates (shift reset after two) */
   PetscInt      flips;         /* stick/slip changes in this step (status frozen after 3) */
   PetscReal     dir[2];        /* slip direction at the last bookkeeping (basis T) */
@@ -242,6 +244,7 @@ struct _n_SPContact {
   PetscReal       creepRel;                        /* max stick creep in the step / h, last bookkeeping */
   PetscInt        maxFlips;                        /* stick/slip changes per step before a status is frozen */
   PetscBool       safeguard, settled;
+  PetscBool       branchHold, holding; /* -contact_branch_hold; the linearisation after an update holds the branches */
   PetscBool       monitor;
   PetscInt        dim;
   /* owned contact points, in the order of the contact-point layout */

@@ -20,7 +20,7 @@ cmval() { awk -v k="$2" '$1 == k { print $2 }' "$CASE_DIR/$1.check"; }
 cmabs() { awk -v k="$2" '$1 == k { v = $2 + 0; printf "%.10g\n", v < 0 ? -v : v }' "$CASE_DIR/$1.check"; } # |value| (e-notation safe)
 
 # F2: stick half-width and centre within one element of c = b sqrt(1 - Q/(mu P)) = 0.076113 and 0
-# (Q = 0.5 mu P; measured -0.40 and -0.50 elements); shifted creep <= 1e-10 h (h = 0.005); contact
+# (Q = 0.5 mu P; measured +0.10 and 1.3e-8 elements, -0.40 and -0.50 before the branch hold); shifted creep <= 1e-10 h (h = 0.005); contact
 # forces balance the loads (Q, P) to 1e-8; the same figures on 1, 2 and 3 ranks (1e-8). The traction
 # L2 error is 10.1 % against friction.md's 5 %: asserted only as a regression bound (10.5 %), the
 # target is missed (README, F2). Before points closing in a step were kept frictionless until the
@@ -122,12 +122,14 @@ CASES
 # solver re-orthogonalises from then on and solves the step again: no cut-back, the loads balanced
 # to 1e-8, creep <= 1e-10 h. F2 shortened to its normal step and two shear steps of 0.1 Q each
 # (Q = 0.2 x 0.5 mu P at the end), -contact_step_cap 0.1 (at alpha 1000 the default cap of one h
-# lets the first normal step stall). About 20 s on 1 rank.
+# lets the first normal step stall). About 20 s on 1 rank. Run without the branch hold
+# (-contact_branch_hold false): with it, the 2-rank run's Newton steps differ and its basis no
+# longer breaks down, and this case is here for the recovery.
 test_cattaneo2d_alpha1000_breakdown() {
   local rc=0 r=0.3333333333333333
   for np in 1 2; do
     local out=$CASE_DIR/np$np.txt
-    spc "$out" "$np" -options_file input/cattaneo2d.opts -contact_method shifted -contact_alpha 1000 -contact_step_cap 0.1 \
+    spc "$out" "$np" -options_file input/cattaneo2d.opts -contact_method shifted -contact_alpha 1000 -contact_step_cap 0.1 -contact_branch_hold false \
       -load_steps 3 -bc_1_ramp 0,$r -bc_2_ramp $r,1 -bc_3_ramp $r,1 -bc_2_value 0.00015,0 -bc_3_gradient -0.00045,0 \
       -output_dir "$CASE_DIR" -output_name "np$np" || return 1
     assert_eq "converged_np$np" "$(sval "$out" converged)" yes || rc=1
