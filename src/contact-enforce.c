@@ -7,11 +7,8 @@
 void SPContactPointTraction(SPContact c, PetscInt i, PetscReal *p, PetscReal *k)
 {
   const SPContactPoint *pt = &c->pt[i];
-  if (c->holding && pt->st.held) { /* its closed branch, held after a shift update (contact-update.c HoldBranches) */
-    *p = -pt->eps * (pt->geo.gap + pt->st.sN), *k = pt->eps;
-    return;
-  }
-  c->method->law->traction(pt->geo.gap, pt->st.sN, pt->eps, p, k);
+  if (c->holding && pt->st.held) c->method->law->closed(pt->geo.gap, pt->st.sN, pt->eps, p, k); /* held after a shift update (contact-update.c HoldBranches) */
+  else c->method->law->traction(pt->geo.gap, pt->st.sN, pt->eps, p, k);
 }
 
 /* A point is active (carries stiffness) where the law's stiffness is positive */

@@ -2,7 +2,7 @@
    a normal law is one function in kernels/contact-law.h and one SPNormalLaw here. */
 #include <spcontact-impl.h>
 
-const SPNormalLaw SPLawShiftedPenalty = {"shifted_penalty", SPShiftedPenaltyTraction};
+const SPNormalLaw SPLawShiftedPenalty = {"shifted_penalty", SPShiftedPenaltyTraction, SPShiftedPenaltyClosed};
 
 /* the first row is the default method */
 const SPMethod *const SPMethodTable[] = {&SPMethodShifted, &SPMethodPenalty, &SPMethodShiftedRegression, &SPMethodALM, NULL};

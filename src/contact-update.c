@@ -188,7 +188,7 @@ static PetscErrorCode UpdateShifts(SPContact c, PetscReal *maxDs)
    (s <- s + g lowers their pressure) and turns stuck points near the cone's edge to slip (the
    stuck ones' tangential update, and the lower pressure): the Newton step from those branches
    pulled them back over several iterations (F1b at alpha 1000, step 4: 0 of 7 stuck points left
-   after the update; 74 / 57 / 54 Newton iterations at alpha 10 / 100 / 1000, 59 / 44 / 39 held).
+   after the update; 74 / 57 / 54 Newton iterations at alpha 10 / 100 / 1000, 58 / 45 / 40 held).
    The Newton step from the held branches is the step of the linear problem the update defines.
    A boundary with an update is never a converged one (its gap error is above the tolerance), and
    the next boundary evaluates the laws unheld. Not with an accelerator (-contact_shift_accel

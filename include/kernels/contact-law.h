@@ -11,10 +11,13 @@
 #include <kernels/tensor.h>
 
 /* A normal contact law: pressure p(g, s) >= 0 for penalty eps, and its stiffness k = -dp/dg. A
-   point is active (carries stiffness) where k > 0. Methods pick a law (SPMethod.law). */
+   point is active (carries stiffness) where k > 0. `closed`: the law's closed branch extended
+   past its opening (p may be negative there), which the branch hold linearises on after a shift
+   update (contact-update.c). Methods pick a law (SPMethod.law). */
 typedef struct {
   const char *name;
   void (*traction)(PetscReal g, PetscReal s, PetscReal eps, PetscReal *p, PetscReal *k);
+  void (*closed)(PetscReal g, PetscReal s, PetscReal eps, PetscReal *p, PetscReal *k);
 } SPNormalLaw;
 
 /* The shifted penalty law p = -eps min(0, g + s); plain penalty is s = 0 */
@@ -22,6 +25,13 @@ static inline void SPShiftedPenaltyTraction(PetscReal g, PetscReal s, PetscReal 
 {
   *p = -eps * PetscMin(0.0, g + s);
   *k = g + s <= 0.0 ? eps : 0.0;
+}
+
+/* Its closed branch: p = -eps (g + s) for every g */
+static inline void SPShiftedPenaltyClosed(PetscReal g, PetscReal s, PetscReal eps, PetscReal *p, PetscReal *k)
+{
+  *p = -eps * (g + s);
+  *k = eps;
 }
 
 typedef enum { SP_OBSTACLE_PLANE, SP_OBSTACLE_SPHERE, SP_OBSTACLE_CYLINDER } SPObstacleType;

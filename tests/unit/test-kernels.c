@@ -133,6 +133,33 @@ static PetscErrorCode Report(Ctx *c, const Stat *s)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The law's closed branch (the branch hold): equal to the law where it is closed (g + s <= 0),
+   k = -dp/dg against central differences on both sides of the opening, continuous there */
+static PetscErrorCode CheckClosedBranch(Ctx *c)
+{
+  Stat s;
+
+  PetscFunctionBeginUser;
+  StatInit(&s, 1, "law_closed_branch");
+  for (PetscInt n = 0; n < c->samples; ++n) {
+    const PetscReal eps = Rnd(c, 1.0, 1e4), sh = Rnd(c, -1e-2, 0.0), g = Rnd(c, -2e-2, 2e-2), dg = c->step * 1e-2;
+    PetscReal       p, k, pl, kl, pp, pm, kk;
+    SPShiftedPenaltyClosed(g, sh, eps, &p, &k);
+    SPShiftedPenaltyClosed(g + dg, sh, eps, &pp, &kk);
+    SPShiftedPenaltyClosed(g - dg, sh, eps, &pm, &kk);
+    StatAdd(&s, PetscAbsReal(k + (pp - pm) / (2 * dg)) / eps);
+    SPShiftedPenaltyTraction(g, sh, eps, &pl, &kl);
+    if (g + sh <= 0.0) StatAdd(&s, (PetscAbsReal(p - pl) + PetscAbsReal(k - kl)) / (eps * 1e-2 + PetscAbsReal(pl)));
+  }
+  {
+    PetscReal p, k; /* at the opening g + s = 0 both give p = 0 */
+    SPShiftedPenaltyClosed(-1e-3, 1e-3, 1e3, &p, &k);
+    StatAdd(&s, PetscAbsReal(p));
+  }
+  PetscCall(Report(c, &s));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* ---------------------------------------------------------------- elasticity */
 
 static PetscReal Det(PetscInt dim, const PetscReal J[])
@@ -782,6 +809,7 @@ int main(int argc, char **argv)
     PetscCall(CheckElasticElement(&c, dim, dim == 2 ? "elastic_stiffness_q1_quad" : "elastic_stiffness_q1_hex", TensorGradients));
     PetscCall(CheckElasticElement(&c, dim, "elastic_stiffness_random_sets", RandomGradients));
   }
+  PetscCall(CheckClosedBranch(&c));
   for (PetscInt dim = 2; dim <= 3; ++dim)
     for (PetscInt t = SP_OBSTACLE_PLANE; t <= SP_OBSTACLE_CYLINDER; ++t) PetscCall(CheckObstacle(&c, dim, (SPObstacleType)t));
   PetscCall(CheckPair(&c, 2, 2));
