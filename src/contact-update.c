@@ -228,9 +228,11 @@ PetscErrorCode SPContactNewtonUpdate(SPContact c, Vec W, PetscBool *changed)
   if (applies) PetscCall(UpdateShifts(c, &maxDs));
   else PetscCall(ResetInNewton(c, c->accel)); /* the active set moved (or the gaps hold): a new map */
   /* the tangential shift, after the normal one. Without the branch hold only on a settled stick/slip
-     set (an update during a change overshoots). With it the update need not wait: the step after
-     it keeps the statuses (F1b 58 / 45 / 40 -> 53 / 41 / 36 Newton iterations, F3 78 -> 75, F5
-     113 -> 111; F1a and F4 unchanged) */
+     set (an update during a change overshoots). With it the update need not wait: where the normal
+     shifts are updated too the step after it keeps the statuses (F1b 58 / 45 / 40 -> 53 / 41 / 36
+     Newton iterations, F3 78 -> 75, F5 113 -> 111; F1a and F4 unchanged). Where only the tangential
+     shifts move (the gaps already hold) nothing is held; holding there too gave the same counts on
+     F1a, F1b, F1c and F2 at alpha 10 */
   if (settled && c->method->timing == SP_UPDATE_NEWTON) {
     if (hold || !c->settled) fupdate = PETSC_TRUE;
     else {
