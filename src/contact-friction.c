@@ -149,14 +149,13 @@ static PetscBool SlipsOnEdge(SPContact c, PetscInt i, const PetscReal y[], Petsc
 
 /* Point i on its friction branch of the iterate before this boundary's shift update (the normal
    one is held by SPContactPointTraction; contact-update.c, -contact_branch_hold): stuck, t = y even
-   outside the cone; slipping, t = mu p y/|y| */
-static void HoldBranch(SPContact c, PetscInt i, const PetscReal y[], PetscReal t[], PetscBool *stick)
+   outside the cone; slipping, t = mu p y/|y| (p: its held pressure) */
+static void HoldBranch(SPContact c, PetscInt i, PetscReal p, const PetscReal y[], PetscReal t[], PetscBool *stick)
 {
-  SPContactPoint *pt = &c->pt[i];
-  const PetscInt  nt = c->dim - 1;
-  PetscReal       p, k, ny = SPNorm(nt, y);
+  const SPContactPoint *pt = &c->pt[i];
+  const PetscInt        nt = c->dim - 1;
+  const PetscReal       ny = SPNorm(nt, y);
 
-  SPContactPointTraction(c, i, &p, &k);
   *stick = pt->st.heldStick;
   for (PetscInt a = 0; a < nt; ++a) t[a] = *stick ? y[a] : (ny > 0.0 ? pt->geo.mu * PetscMax(p, 0.0) * y[a] / ny : 0.0);
 }
@@ -192,7 +191,7 @@ void SPFrictionTraction(SPContact c, PetscInt i, PetscReal y[], PetscReal t[], P
       for (PetscInt a = 0; a < nt; ++a) t[a] = ny > 0.0 ? r * y[a] / ny : 0.0;
     }
   }
-  if (c->holding && pt->st.held && (*stick != pt->st.heldStick || p < 0.0)) HoldBranch(c, i, y, t, stick);
+  if (c->holding && pt->st.held && (*stick != pt->st.heldStick || p < 0.0)) HoldBranch(c, i, p, y, t, stick);
 }
 
 /* c->Fc += the friction residual of every point (before the assembly of Fc) */
