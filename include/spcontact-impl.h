@@ -94,6 +94,7 @@ struct _n_SPProblem {
 PETSC_EXTERN PetscErrorCode SPBCSetFromOptions(MPI_Comm, PetscInt, PetscInt *, SPBC[]);
 PETSC_EXTERN PetscErrorCode SPBCAddToDS(DM, PetscInt, SPBC[], PetscScalar[]);
 PETSC_EXTERN void           SPBCSetLoad(PetscInt, const SPBC[], PetscReal, PetscScalar[]);
+PETSC_EXTERN PetscBool      SPBCProportional(PetscInt, const SPBC[], const PetscReal[3], PetscReal);
 
 /* Enforcement methods (src/methods/<name>.c, table in src/contact-methods.c). A method is a normal
    law (traction and its tangent) plus an update rule for the point's shift and the moment it runs:
@@ -245,6 +246,11 @@ struct _n_SPContact {
   PetscInt        maxFlips;                        /* stick/slip changes per step before a status is frozen */
   PetscBool       safeguard, settled;
   PetscBool       branchHold, holding; /* -contact_branch_hold; the linearisation after an update holds the branches */
+  PetscBool       predict, havePrev;   /* -contact_shift_predict; a converged step before the last one is known */
+  PetscReal       predictRatio;        /* pending prediction for the next solve (0: none), contact-predict.c */
+  PetscReal      *prevS;               /* per point (4): s_N and the committed traction of the step before the last */
+  SPPointStatus  *prevStatus;          /* per point: its status at the step before the last */
+  PetscInt        predictions;         /* load steps started from predicted shifts */
   PetscBool       monitor;
   PetscInt        dim;
   /* owned contact points, in the order of the contact-point layout */
@@ -297,6 +303,8 @@ struct _n_SPContact {
 };
 
 /* helpers shared by the contact files */
+PETSC_EXTERN PetscErrorCode SPContactPredictApply(SPContact);
+PETSC_EXTERN PetscErrorCode SPFrictionClipShifts(SPContact);
 PETSC_EXTERN const SPNormalLaw SPLawShiftedPenalty;
 PETSC_EXTERN PetscReal      SPShiftIncrement(PetscInt, const PetscReal[], const PetscReal[]);
 PETSC_EXTERN PetscErrorCode SPContactPointsSetUp(SPContact, DMLabel);

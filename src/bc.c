@@ -109,6 +109,16 @@ static PetscErrorCode DirichletValue(PetscInt dim, PetscReal load, const PetscRe
   return PETSC_SUCCESS;
 }
 
+/* Whether every condition moves r times as much over [l[1], l[2]] as over [l[0], l[1]] */
+PetscBool SPBCProportional(PetscInt nbc, const SPBC bc[], const PetscReal l[3], PetscReal r)
+{
+  for (PetscInt i = 0; i < nbc; ++i) {
+    const PetscReal a0 = Amplitude(&bc[i], l[0]), a1 = Amplitude(&bc[i], l[1]), a2 = Amplitude(&bc[i], l[2]);
+    if (PetscAbsReal((a2 - a1) - r * (a1 - a0)) > 1e-10 * (PetscAbsReal(a2 - a1) + PetscAbsReal(a1 - a0) + 1e-300)) return PETSC_FALSE;
+  }
+  return PETSC_TRUE;
+}
+
 /* The Neumann slots of constants[] at load factor `load` */
 void SPBCSetLoad(PetscInt nbc, const SPBC bc[], PetscReal load, PetscScalar constants[])
 {

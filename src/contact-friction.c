@@ -357,6 +357,16 @@ static PetscReal ClipToCone(SPContact c, PetscInt i)
   return lam;
 }
 
+/* Every anchored point's tangential shift clipped to its cone (after a prediction) */
+PetscErrorCode SPFrictionClipShifts(SPContact c)
+{
+  PetscFunctionBeginUser;
+  if (!c->friction) PetscFunctionReturn(PETSC_SUCCESS);
+  for (PetscInt i = 0; i < c->n; ++i)
+    if (c->pt[i].st.anchored) (void)ClipToCone(c, i);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* A slipping point's tangential shift against its update at the same state: |s_T' - s_T| in
    units of mu lambda_N / eps_T, with s_T' = -t_T/eps_T from the traction its new s_T gives (clipped
    like the update). The shift tracks the traction mu p, so a change of p in the step moves it

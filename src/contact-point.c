@@ -47,6 +47,7 @@ static PetscErrorCode CollectPoints(SPContact c)
   PetscCall(VecDestroy(&v));
   PetscCall(PetscCalloc4(c->n, &c->pt, c->n, &c->saved, c->n, &c->gapStart, 3 * c->n, &c->slipStart));
   PetscCall(PetscCalloc1(c->n * SP_KNOWN_FACETS, &c->known));
+  PetscCall(PetscCalloc2(4 * c->n + 1, &c->prevS, c->n + 1, &c->prevStatus));
   for (PetscInt i = 0; i < c->n * SP_KNOWN_FACETS; ++i) c->known[i] = -1;
   PetscCall(DMGetCoordinatesLocal(c->dm, &coords));
   PetscCall(DMGetCoordinateSection(c->dm, &cs));
@@ -138,6 +139,7 @@ PetscErrorCode SPContactPointsDestroy(SPContact c)
   PetscFunctionBeginUser;
   PetscCall(PetscFree4(c->pt, c->saved, c->gapStart, c->slipStart));
   PetscCall(PetscFree(c->known));
+  PetscCall(PetscFree2(c->prevS, c->prevStatus));
   PetscCall(PetscFree2(c->hist, c->nhist));
   PetscCall(SPShiftAccelDestroy(&c->accel));
   PetscCall(PetscFree4(c->accS, c->accG, c->accNew, c->accIn));

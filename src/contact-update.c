@@ -72,6 +72,7 @@ PetscErrorCode SPContactBeginSolve(SPContact c, Vec X)
   c->holding = PETSC_FALSE;
   PetscCall(SPContactEvaluate(c, X));
   PetscCall(SPFrictionAnchor(c, PETSC_FALSE));
+  PetscCall(SPContactPredictApply(c));
   PetscCall(Bookkeep(c, 0.0, PETSC_FALSE));
   c->setSettled = PETSC_FALSE;
   for (PetscInt i = 0; i < c->n; ++i) c->nhist[i] = 0;

@@ -26,6 +26,7 @@ PetscErrorCode SPContactCreate(DM dm, SPProblem problem, PetscLogEvent search, S
   c->safeguard = PETSC_TRUE;
   c->settled   = PETSC_TRUE;
   c->branchHold = PETSC_TRUE;
+  c->predict    = PETSC_TRUE;
   c->nvalues = SP_MAX_VALUES;
   PetscCall(PetscStrcpy(c->label, "Face Sets"));
   PetscCall(DMGetDimension(dm, &c->dim));
@@ -172,6 +173,7 @@ PetscErrorCode SPContactSetFromOptions(SPContact c)
   PetscCall(PetscOptionsReal("-contact_gap_tol", "Absolute gap tolerance (a length); overrides -contact_gap_rtol", "SPContactSetFromOptions", c->gapTol, &c->gapTol, &c->gapTolSet));
   PetscCall(PetscOptionsReal("-contact_step_cap", "Newton step control: scale a step so no point penetrates deeper than step_cap x h in one step (0: off); without friction, a load step that stalls is solved again once with a tenth of it", "SPContactSetFromOptions", c->stepCap, &c->stepCap, NULL));
   PetscCall(PetscOptionsBool("-contact_safeguard", "Update the shift only of points active in both the previous and the new iterate (method.md 4.1); false only to demonstrate chatter", "SPContactSetFromOptions", c->safeguard, &c->safeguard, NULL));
+  PetscCall(PetscOptionsBool("-contact_shift_predict", "Shifted: a load step whose increment is proportional to the last one (every condition's amplitude moves in proportion) starts from the shifts extrapolated from the last two converged steps", "SPContactSetFromOptions", c->predict, &c->predict, NULL));
   PetscCall(PetscOptionsBool("-contact_branch_hold", "Shifted: the Newton step after an in-Newton shift update linearises every point on its branch of the iterate before the update (closed: p = -eps (g + s) even where the new shift opens it; stuck or slipping as it was), not on the one the update gives at the unchanged displacement; not with -contact_shift_accel anderson", "SPContactSetFromOptions", c->branchHold, &c->branchHold, NULL));
   PetscCall(PetscOptionsBool("-contact_shift_settled", "In-Newton shift update only at iterations whose active set did not change (the contraction rate holds only then)", "SPContactSetFromOptions", c->settled, &c->settled, NULL));
   PetscCall(PetscOptionsEList("-contact_tangent", "Second variation of the gap in the tangent (obstacle curvature; pair projection and normal variation): auto (once a Newton iteration left the active set unchanged), full (always: the consistent tangent), frozen (never)", "SPContactSetFromOptions", Tangents, 3, Tangents[tangent], &tangent, NULL));

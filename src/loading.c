@@ -25,7 +25,9 @@ static PetscErrorCode SolveAndUpdate(SPApp app, SNESConvergedReason *reason)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode SolveStep(SPApp app, PetscReal load, PetscInt step, Vec ubackup, PetscBool *ok)
+/* ratio: the load increment over the last converged one where the load moves in proportion (the
+   shifts' predictor, contact-predict.c), else 0 */
+static PetscErrorCode SolveStep(SPApp app, PetscReal load, PetscReal ratio, PetscInt step, Vec ubackup, PetscBool *ok)
 {
   SNESConvergedReason reason;
   FILE               *fp;
@@ -36,6 +38,7 @@ static PetscErrorCode SolveStep(SPApp app, PetscReal load, PetscInt step, Vec ub
   PetscCall(SPProblemSetLoadFactor(app->problem, load));
   PetscCall(SPOutputGetHistoryFile(app->output, &fp));
   PetscCall(SPSolverSetHistory(app->solver, fp, step));
+  SPContactPredictNext(app->contact, ratio);
   PetscCall(SolveAndUpdate(app, &reason));
   for (PetscInt k = 0; k < 2 && reason < 0; ++k) { /* the recoveries (the GMRES one once per run, the */
     PetscBool retry = PETSC_FALSE;                  /* step cap once per step): the step again, no cut-back */
@@ -44,6 +47,7 @@ static PetscErrorCode SolveStep(SPApp app, PetscReal load, PetscInt step, Vec ub
     if (!retry) break;
     PetscCall(VecCopy(ubackup, app->u));
     PetscCall(SPContactRestoreState(app->contact));
+    SPContactPredictNext(app->contact, ratio);
     PetscCall(SolveAndUpdate(app, &reason));
   }
   SPContactRestoreStepCap(app->contact);
@@ -109,7 +113,7 @@ static PetscErrorCode Regrow(SPApp app, PetscReal *inc)
 
 PetscErrorCode SPLoadingRun(SPApp app)
 {
-  PetscReal done = 0.0, inc = 1.0 / app->loadSteps;
+  PetscReal done = 0.0, inc = 1.0 / app->loadSteps, last = -1.0; /* last: the converged load before done */
   PetscInt  step = 0;
   PetscBool halt = PETSC_FALSE;
   PetscInt  its0, lits0; /* solver counts before the step, for the progress line */
@@ -125,11 +129,15 @@ PetscErrorCode SPLoadingRun(SPApp app)
     PetscBool ok = PETSC_TRUE, stop;
     char      why[256];
     PetscCall(StopReason(app, ok, inc, why, sizeof(why), &stop));
-    if (!stop) PetscCall(SolveStep(app, load, step + 1, ubackup, &ok));
+    if (!stop) {
+      const PetscReal l[3] = {last, done, load};
+      PetscCall(SolveStep(app, load, last < 0.0 ? 0.0 : SPProblemLoadRatio(app->problem, l), step + 1, ubackup, &ok));
+    }
     if (ok && !stop) {
-      done = load;
+      last = done, done = load;
       step++;
       PetscCall(SPContactCommitStep(app->contact, app->u));
+      PetscCall(SPContactPredictRecord(app->contact));
       PetscCall(PetscLogStagePush(app->log.output)); /* stage times are exclusive: output leaves "SP solve" */
       PetscCall(SPOutputWriteStep(app->output, app->problem, app->u, app->contact));
       PetscCall(PetscLogStagePop());

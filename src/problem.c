@@ -403,6 +403,15 @@ PetscErrorCode SPProblemSetUp(SPProblem p)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The ratio r of the load increment l[1] -> l[2] to the increment l[0] -> l[1] when every
+   condition (and the obstacles' motion, proportional to the load factor) moves in proportion over
+   the two; 0 when the load curves bend between them (a normal phase, then a tangential one) */
+PetscReal SPProblemLoadRatio(SPProblem p, const PetscReal l[3])
+{
+  const PetscReal r = l[1] > l[0] ? (l[2] - l[1]) / (l[1] - l[0]) : 0.0;
+  return r > 0.0 && SPBCProportional(p->nbc, p->bc, l, r) ? r : 0.0;
+}
+
 PetscErrorCode SPProblemSetLoadFactor(SPProblem p, PetscReal load)
 {
   PetscDS            ds;
