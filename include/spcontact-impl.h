@@ -205,6 +205,11 @@ typedef struct {
                                   stays in equilibrium); refreshed at the next solve's start */
 } SPPointState;
 typedef struct {
+  PetscReal     sN, tCommit[3];
+  SPPointStatus status;
+} SPPointPrev;
+
+typedef struct {
   PetscInt        vertex, sdof[3]; /* plex vertex; global dofs of its displacement (constrained < 0) */
   PetscInt        pairMask;        /* bit k: slave of pair k */
   PetscBool       onObstacle;      /* slave of the rigid obstacles */
@@ -218,6 +223,7 @@ typedef struct {
   PetscReal       epsT;            /* tangential penalty alpha_T E / h */
   PetscReal       t[2];            /* tangential traction of the last evaluated state (basis T) */
   PetscBool       stick;           /* its return-map status */
+  SPPointPrev     prev;            /* the converged step before the last (the shifts' predictor) */
   PetscInt        keepFacet;       /* pairs: master facet gid of the last Newton iterate in this step
                                       (-1: none), kept while it stays a near-best candidate */
 } SPContactPoint;
@@ -246,10 +252,8 @@ struct _n_SPContact {
   PetscInt        maxFlips;                        /* stick/slip changes per step before a status is frozen */
   PetscBool       safeguard, settled;
   PetscBool       branchHold, holding; /* -contact_branch_hold; the linearisation after an update holds the branches */
-  PetscBool       predict, havePrev;   /* -contact_shift_predict; a converged step before the last one is known */
+  PetscBool       predict, havePrev;   /* -contact_shift_predict; SPContactPoint.prev holds the step before the last */
   PetscReal       predictRatio;        /* pending prediction for the next solve (0: none), contact-predict.c */
-  PetscReal      *prevS;               /* per point (4): s_N and the committed traction of the step before the last */
-  SPPointStatus  *prevStatus;          /* per point: its status at the step before the last */
   PetscInt        predictions;         /* load steps started from predicted shifts */
   PetscBool       monitor;
   PetscInt        dim;
@@ -437,7 +441,7 @@ PETSC_EXTERN PetscErrorCode SPSignalsRestore(SPSignals *);
 PETSC_EXTERN PetscErrorCode SPSignalsPending(MPI_Comm, SPSignals *, PetscInt, int *);
 
 /* restart.c: the state of every converged step in the h5 (/restart), and a run resumed from it */
-#define SP_POINT_NPACK 44 /* reals per contact point in /restart/points (contact-point.c) */
+#define SP_POINT_NPACK 49 /* reals per contact point in /restart/points (contact-point.c) */
 PETSC_EXTERN PetscErrorCode SPContactPackPoints(SPContact, PetscReal[]);
 PETSC_EXTERN PetscErrorCode SPContactUnpackPoints(SPContact, const PetscReal[], PetscBool *);
 PETSC_EXTERN PetscErrorCode SPRestartWriteStep(SPApp, PetscReal);
@@ -468,6 +472,7 @@ struct _n_SPApp {
   PetscReal minIncrement, maxWallTime; /* cut-back floor (load factor); seconds (0: none) */
   PetscBool converged, quiet; /* quiet: no progress line per load step */
   PetscReal loadReached;
+  PetscReal loadBefore;    /* the converged load factor before loadReached (-1: none; the shifts' predictor) */
   PetscLogDouble t0;
   SPSignals signals;
   int       interrupted;   /* the signal that stopped the run (0: none) */

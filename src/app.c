@@ -9,6 +9,7 @@ PetscErrorCode SPAppCreate(MPI_Comm comm, SPApp *app)
   PetscCall(PetscNew(&a));
   a->comm        = comm;
   a->loadSteps   = 1;
+  a->loadBefore  = -1.0; /* no converged step before the first */
   a->maxCutbacks = 20;
   a->minIncrement = 1e-4;
   a->growAfter    = 4;

@@ -47,7 +47,6 @@ static PetscErrorCode CollectPoints(SPContact c)
   PetscCall(VecDestroy(&v));
   PetscCall(PetscCalloc4(c->n, &c->pt, c->n, &c->saved, c->n, &c->gapStart, 3 * c->n, &c->slipStart));
   PetscCall(PetscCalloc1(c->n * SP_KNOWN_FACETS, &c->known));
-  PetscCall(PetscCalloc2(4 * c->n + 1, &c->prevS, c->n + 1, &c->prevStatus));
   for (PetscInt i = 0; i < c->n * SP_KNOWN_FACETS; ++i) c->known[i] = -1;
   PetscCall(DMGetCoordinatesLocal(c->dm, &coords));
   PetscCall(DMGetCoordinateSection(c->dm, &cs));
@@ -139,7 +138,6 @@ PetscErrorCode SPContactPointsDestroy(SPContact c)
   PetscFunctionBeginUser;
   PetscCall(PetscFree4(c->pt, c->saved, c->gapStart, c->slipStart));
   PetscCall(PetscFree(c->known));
-  PetscCall(PetscFree2(c->prevS, c->prevStatus));
   PetscCall(PetscFree2(c->hist, c->nhist));
   PetscCall(SPShiftAccelDestroy(&c->accel));
   PetscCall(PetscFree4(c->accS, c->accG, c->accNew, c->accIn));
@@ -343,6 +341,7 @@ static void Reals(PetscBool pack, PetscReal v[], PetscInt n, PetscReal b[], Pets
 static PetscInt PointState(PetscBool pack, SPContactPoint *p, PetscReal *anchor, PetscReal b[])
 {
   SPPointState *st = &p->st;
+  PetscReal     pv[2] = {p->prev.sN, (PetscReal)p->prev.status};
   PetscReal     e[6] = {(PetscReal)st->status, (PetscReal)st->active, (PetscReal)st->inactiveCount, (PetscReal)st->flips, (PetscReal)st->reversed, st->anchored ? (st->fresh ? 2.0 : 1.0) : 0.0}; /* anchored, 2: fresh */
   PetscReal     X[3] = {p->X[0], p->X[1], p->X[2]};
   PetscInt      k = 0;
@@ -364,7 +363,11 @@ static PetscInt PointState(PetscBool pack, SPContactPoint *p, PetscReal *anchor,
   Reals(pack, st->T[0], 3, b, &k);
   Reals(pack, st->T[1], 3, b, &k);
   Reals(pack, st->tT, 2, b, &k);
+  Reals(pack, pv, 2, b, &k);
+  Reals(pack, p->prev.tCommit, 3, b, &k);
   if (!pack) {
+    p->prev.sN        = pv[0];
+    p->prev.status    = (SPPointStatus)pv[1];
     st->status        = (SPPointStatus)e[0];
     st->active        = e[1] != 0.0 ? PETSC_TRUE : PETSC_FALSE;
     st->inactiveCount = (PetscInt)e[2];

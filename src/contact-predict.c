@@ -15,9 +15,10 @@ PetscErrorCode SPContactPredictRecord(SPContact c)
   PetscFunctionBeginUser;
   if (!c->enabled) PetscFunctionReturn(PETSC_SUCCESS);
   for (PetscInt i = 0; i < c->n; ++i) {
-    c->prevS[4 * i] = c->saved[i].sN;
-    for (PetscInt d = 0; d < 3; ++d) c->prevS[4 * i + 1 + d] = c->saved[i].tCommit[d];
-    c->prevStatus[i] = c->saved[i].status;
+    SPPointPrev *prev = &c->pt[i].prev;
+    prev->sN          = c->saved[i].sN;
+    prev->status      = c->saved[i].status;
+    for (PetscInt d = 0; d < 3; ++d) prev->tCommit[d] = c->saved[i].tCommit[d];
   }
   c->havePrev = PETSC_TRUE;
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -34,13 +35,13 @@ static void PredictPoint(SPContact c, PetscInt i, PetscReal r)
 {
   SPContactPoint *pt = &c->pt[i];
   SPPointState   *st = &pt->st;
-  const PetscReal *prev = &c->prevS[4 * i];
+  const SPPointPrev *prev = &pt->prev;
   PetscReal        tp[3];
 
   if (st->status != SP_POINT_STICK) return;
-  st->sN = PetscMin(0.0, st->sN + r * (st->sN - prev[0]));
+  st->sN = PetscMin(0.0, st->sN + r * (st->sN - prev->sN));
   if (!c->friction || !st->anchored || st->fresh) return;
-  for (PetscInt d = 0; d < 3; ++d) tp[d] = st->tCommit[d] + r * (st->tCommit[d] - prev[1 + d]);
+  for (PetscInt d = 0; d < 3; ++d) tp[d] = st->tCommit[d] + r * (st->tCommit[d] - prev->tCommit[d]);
   for (PetscInt a = 0; a < c->dim - 1; ++a) st->sT[a] = -SPDot(c->dim, tp, st->T[a]) / pt->epsT;
 }
 
@@ -54,7 +55,7 @@ PetscErrorCode SPContactPredictApply(SPContact c)
   PetscFunctionBeginUser;
   c->predictRatio = 0.0;
   if (r <= 0.0) PetscFunctionReturn(PETSC_SUCCESS);
-  for (PetscInt i = 0; i < c->n; ++i) moved += c->pt[i].st.status != c->prevStatus[i];
+  for (PetscInt i = 0; i < c->n; ++i) moved += c->pt[i].st.status != c->pt[i].prev.status;
   PetscCallMPI(MPI_Allreduce(&moved, &all, 1, MPIU_INT, MPI_SUM, PetscObjectComm((PetscObject)c->dm)));
   if (all) PetscFunctionReturn(PETSC_SUCCESS);
   for (PetscInt i = 0; i < c->n; ++i) PredictPoint(c, i, r);

@@ -113,7 +113,7 @@ static PetscErrorCode Regrow(SPApp app, PetscReal *inc)
 
 PetscErrorCode SPLoadingRun(SPApp app)
 {
-  PetscReal done = 0.0, inc = 1.0 / app->loadSteps, last = -1.0; /* last: the converged load before done */
+  PetscReal done = 0.0, inc = 1.0 / app->loadSteps;
   PetscInt  step = 0;
   PetscBool halt = PETSC_FALSE;
   PetscInt  its0, lits0; /* solver counts before the step, for the progress line */
@@ -130,11 +130,11 @@ PetscErrorCode SPLoadingRun(SPApp app)
     char      why[256];
     PetscCall(StopReason(app, ok, inc, why, sizeof(why), &stop));
     if (!stop) {
-      const PetscReal l[3] = {last, done, load};
-      PetscCall(SolveStep(app, load, last < 0.0 ? 0.0 : SPProblemLoadRatio(app->problem, l), step + 1, ubackup, &ok));
+      const PetscReal l[3] = {app->loadBefore, done, load};
+      PetscCall(SolveStep(app, load, l[0] < 0.0 ? 0.0 : SPProblemLoadRatio(app->problem, l), step + 1, ubackup, &ok));
     }
     if (ok && !stop) {
-      last = done, done = load;
+      app->loadBefore = done, done = load;
       step++;
       PetscCall(SPContactCommitStep(app->contact, app->u));
       PetscCall(SPContactPredictRecord(app->contact));

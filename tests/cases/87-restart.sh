@@ -77,6 +77,7 @@ test_restart_after_step_cap_recovery() {
 }
 test_restart_b2_shifted_np2()     { rs_case 2 -options_file input/hertz2d.opts -contact_method shifted; }
 test_restart_friction_alm()       { rs_case 1 -options_file input/friction_block2d.opts -contact_method alm; }
+test_restart_friction_predicted()  { rs_case 2 -options_file input/friction_block2d.opts -contact_method shifted; } # every shear step starts from predicted shifts
 # F1b full slip: slipping points with moving anchors and tangential shifts
 test_restart_friction_slide_shifted_np2() { rs_case 2 -options_file input/friction_slide2d.opts -contact_method shifted; }
 # Another rank count: the restart data is stored by serial mesh point number (restart-natural.c),
