@@ -60,7 +60,11 @@ rs_case() {
   same_summary "$CASE_DIR/full.txt" "$CASE_DIR/rest.txt" 1e-10 load_factor load_steps displacement_max \
     contact_active_points contact_max_penetration contact_gap_error contact_force_x contact_force_y contact_peak_pressure contact_radius contact_retries_step_cap || rc=1
   if [ "$(sval "$CASE_DIR/full.txt" contact_friction)" = yes ]; then
-    same_summary "$CASE_DIR/full.txt" "$CASE_DIR/rest.txt" 1e-10 contact_stick_points contact_slip_points contact_max_stick_creep contact_tangential_force_x || rc=1
+    same_summary "$CASE_DIR/full.txt" "$CASE_DIR/rest.txt" 1e-10 contact_stick_points contact_slip_points contact_tangential_force_x || rc=1
+    # the creep is what the converged iterate left (F4: about its bound creep_rtol h = 2e-11); on
+    # another rank count the partition rounds it differently (F4 3 -> 1: 3.1e-14 apart)
+    local catol=1e-14; [ "$np2" = "$np" ] || catol=1e-13
+    SAME_ATOL=$catol same_summary "$CASE_DIR/full.txt" "$CASE_DIR/rest.txt" 1e-10 contact_max_stick_creep || rc=1
   fi
   assert_le "displacement field at load 1, restarted vs uninterrupted (relative)" "$(rs_same_field "$CASE_DIR/full.h5" "$CASE_DIR/rest.h5")" 1e-10 || rc=1
   return $rc
