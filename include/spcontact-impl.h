@@ -205,7 +205,7 @@ typedef struct {
                                   stays in equilibrium); refreshed at the next solve's start */
 } SPPointState;
 typedef struct {
-  PetscReal     sN, tCommit[3];
+  PetscReal     tCommit[3]; /* committed traction */
   SPPointStatus status;
 } SPPointPrev;
 
@@ -223,7 +223,7 @@ typedef struct {
   PetscReal       epsT;            /* tangential penalty alpha_T E / h */
   PetscReal       t[2];            /* tangential traction of the last evaluated state (basis T) */
   PetscBool       stick;           /* its return-map status */
-  SPPointPrev     prev;            /* the converged step before the last (the shifts' predictor) */
+  SPPointPrev     prev;            /* the converged step before the last (the stuck points' predictor) */
   PetscInt        keepFacet;       /* pairs: master facet gid of the last Newton iterate in this step
                                       (-1: none), kept while it stays a near-best candidate */
 } SPContactPoint;
@@ -254,7 +254,7 @@ struct _n_SPContact {
   PetscBool       branchHold, holding; /* -contact_branch_hold; the linearisation after an update holds the branches */
   PetscBool       predict, havePrev;   /* -contact_shift_predict; SPContactPoint.prev holds the step before the last */
   PetscReal       predictRatio;        /* pending prediction for the next solve (0: none), contact-predict.c */
-  PetscInt        predictions;         /* load steps started from predicted shifts */
+  PetscInt        predictions;         /* load steps started from predicted tangential shifts */
   PetscBool       monitor;
   PetscInt        dim;
   /* owned contact points, in the order of the contact-point layout */
@@ -441,7 +441,7 @@ PETSC_EXTERN PetscErrorCode SPSignalsRestore(SPSignals *);
 PETSC_EXTERN PetscErrorCode SPSignalsPending(MPI_Comm, SPSignals *, PetscInt, int *);
 
 /* restart.c: the state of every converged step in the h5 (/restart), and a run resumed from it */
-#define SP_POINT_NPACK 49 /* reals per contact point in /restart/points (contact-point.c) */
+#define SP_POINT_NPACK 48 /* reals per contact point in /restart/points (contact-point.c) */
 PETSC_EXTERN PetscErrorCode SPContactPackPoints(SPContact, PetscReal[]);
 PETSC_EXTERN PetscErrorCode SPContactUnpackPoints(SPContact, const PetscReal[], PetscBool *);
 PETSC_EXTERN PetscErrorCode SPRestartWriteStep(SPApp, PetscReal);
@@ -472,7 +472,7 @@ struct _n_SPApp {
   PetscReal minIncrement, maxWallTime; /* cut-back floor (load factor); seconds (0: none) */
   PetscBool converged, quiet; /* quiet: no progress line per load step */
   PetscReal loadReached;
-  PetscReal loadBefore;    /* the converged load factor before loadReached (-1: none; the shifts' predictor) */
+  PetscReal loadBefore;    /* the converged load factor before loadReached (-1: none; the stuck points' predictor) */
   PetscLogDouble t0;
   SPSignals signals;
   int       interrupted;   /* the signal that stopped the run (0: none) */

@@ -16,9 +16,9 @@ PetscErrorCode SPFrictionSetFromOptions(PetscOptionItems *PetscOptionsObject, SP
   PetscFunctionBeginUser;
   PetscCall(PetscOptionsReal("-contact_friction_mu", "Coulomb friction coefficient of every obstacle and pair (0: frictionless; per obstacle/pair: -contact_obstacle_<k>_mu, -contact_pair_<k>_mu)", "SPContactSetFromOptions", c->mu, &c->mu, NULL));
   PetscCall(PetscOptionsReal("-contact_friction_alpha", "Tangential penalty factor: eps_T = alpha_T E / h (default: -contact_alpha)", "SPContactSetFromOptions", c->alphaT, &c->alphaT, &setAlphaT));
-  PetscCall(PetscOptionsReal("-contact_friction_creep_rtol", "Friction, methods that update the shift: converged only when no stuck point moves more than rtol x h in the step", "SPContactSetFromOptions", c->creepRtol, &c->creepRtol, NULL));
+  PetscCall(PetscOptionsReal("-contact_friction_creep_rtol", "Friction, methods that update the shift: converged only when no stuck point has moved more than rtol x h since it stuck (the creep committed in earlier steps counts, and the update takes it back)", "SPContactSetFromOptions", c->creepRtol, &c->creepRtol, NULL));
   PetscCall(PetscOptionsInt("-contact_friction_max_flips", "Friction: stick/slip changes of a point in a load step after which it slips for the rest of the step (a chattering point; friction.md safeguard)", "SPContactSetFromOptions", c->maxFlips, &c->maxFlips, NULL));
-  PetscCall(PetscOptionsBool("-contact_friction_stick_hold", "Friction, shifted: once every stuck point has crept at most creep_rtol h in the step and creep_rtol h_c in all (committed creep included), stuck points keep their tangential shifts (an update would only perturb a converged state and cost a Newton iteration)", "SPContactSetFromOptions", c->stickHold, &c->stickHold, NULL));
+  PetscCall(PetscOptionsBool("-contact_friction_stick_hold", "Friction, shifted: once every stuck point has crept at most creep_rtol h and creep_rtol h_c since it stuck, stuck points keep their tangential shifts (an update would only perturb a converged state and cost a Newton iteration)", "SPContactSetFromOptions", c->stickHold, &c->stickHold, NULL));
   PetscCall(PetscOptionsReal("-contact_friction_slip_rtol", "Friction, methods that update the shift: converged only when the tangential shifts of slipping points are a fixed point of their update (one more update would move none by more than rtol x mu p / eps_T)", "SPContactSetFromOptions", c->slipRtol, &c->slipRtol, NULL));
   if (!setAlphaT) c->alphaT = -1.0; /* resolved to alpha once -contact_alpha is known */
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -398,9 +398,9 @@ static PetscReal ShiftChange(SPContact c, PetscInt i, const PetscReal old[])
   return SPNorm(c->dim - 1, d);
 }
 
-/* Point i's creep if it sticks: this step's, relative to its h, and in all (the committed creep
-   plus this step's, a length) */
-static void Creep(SPContact c, PetscInt i, PetscReal *step, PetscReal *total)
+/* Point i's creep if it sticks: since it stuck (the committed creep plus this step's), a length,
+   and relative to its h */
+static void Creep(SPContact c, PetscInt i, PetscReal *rel, PetscReal *total)
 {
   const SPContactPoint *pt  = &c->pt[i];
   const PetscInt        dim = c->dim;
@@ -408,15 +408,13 @@ static void Creep(SPContact c, PetscInt i, PetscReal *step, PetscReal *total)
 
   for (PetscInt a = 0; a < dim - 1; ++a)
     for (PetscInt d = 0; d < dim; ++d) dg[d] += pt->geo.dgT[a] * pt->st.T[a][d];
-  *step = SPNorm(dim, dg) / pt->h;
   for (PetscInt d = 0; d < dim; ++d) dg[d] += pt->st.creep[d];
   *total = SPNorm(dim, dg);
+  *rel   = *total / pt->h;
 }
 
 /* Whether every stuck point of the evaluated state meets the creep test of the Newton convergence
-   test (at most creep_rtol h in the step) and has crept at most creep_rtol h_c counting the creep
-   committed in the steps before (so that the leftovers of many steps do not add up past it),
-   collective: their tangential shifts then hold, as the normal ones do once the gaps hold */
+   test (at most creep_rtol h since it stuck) and has crept at most creep_rtol h_c, collective: their tangential shifts then hold, as the normal ones do once the gaps hold */
 static PetscErrorCode StickCreepHolds(SPContact c, PetscBool *holds)
 {
   PetscReal r[2] = {0.0, 0.0}, all[2];
@@ -424,13 +422,13 @@ static PetscErrorCode StickCreepHolds(SPContact c, PetscBool *holds)
   PetscFunctionBeginUser;
   for (PetscInt i = 0; i < c->n; ++i) {
     const SPContactPoint *pt = &c->pt[i];
-    PetscReal             y[2], t[2], step, total;
+    PetscReal             y[2], t[2], rel, total;
     PetscBool             stick;
     if (pt->geo.mu <= 0.0 || !pt->st.active || !SPContactPointActive(c, i)) continue;
     SPFrictionTraction(c, i, y, t, &stick);
     if (!stick) continue;
-    Creep(c, i, &step, &total);
-    r[0] = PetscMax(r[0], step);
+    Creep(c, i, &rel, &total);
+    r[0] = PetscMax(r[0], rel);
     r[1] = PetscMax(r[1], total / c->lengthScale);
   }
   PetscCallMPI(MPI_Allreduce(r, all, 2, MPIU_REAL, MPI_MAX, PetscObjectComm((PetscObject)c->dm)));
@@ -438,15 +436,15 @@ static PetscErrorCode StickCreepHolds(SPContact c, PetscBool *holds)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* The tangential shift update s_T <- -t_T/eps_T of the points active in the previous and the
-   current iterate (open points: s_T = 0), then the clip eps_T |s_T| <= mu lambda_N with
-   lambda_N = -eps s_N (after the normal update). With -contact_shift_accel anderson the stuck
-   points' updates (s_T <- s_T + Dg_T: the same affine fixed point as the normal one) get their own
-   Anderson step (contact-accel.c), then the clip. With mayHold (the in-Newton update at a boundary
-   where the normal shifts hold) and -contact_friction_stick_hold, once every stuck point's creep
-   holds its tolerance stuck points keep their shifts: an update would only perturb a converged
-   state, and the residual it raises took another Newton iteration. *maxDs: max |Delta s_T|
-   (collective max). */
+/* The tangential shift update s_T <- -t_T/eps_T (stuck points: + their committed creep) of the
+   points active in the previous and the current iterate (open points: s_T = 0), then the clip
+   eps_T |s_T| <= mu lambda_N with lambda_N = -eps s_N (after the normal update). With
+   -contact_shift_accel anderson the stuck points' updates (s_T <- s_T + Dg_T + c_T: the same affine
+   fixed point as the normal one) get their own Anderson step (contact-accel.c), then the clip.
+   With mayHold (the in-Newton update at a boundary where the normal shifts hold) and
+   -contact_friction_stick_hold, once every stuck point's creep holds its tolerance stuck points
+   keep their shifts: an update would only perturb a converged state, and the residual it raises
+   took another Newton iteration. *maxDs: max |Delta s_T| (collective max). */
 PetscErrorCode SPFrictionUpdate(SPContact c, PetscBool mayHold, PetscReal *maxDs)
 {
   const PetscInt nt = c->dim - 1;
@@ -465,8 +463,12 @@ PetscErrorCode SPFrictionUpdate(SPContact c, PetscBool mayHold, PetscReal *maxDs
     if (pt->geo.mu <= 0.0) continue;
     if (activeNow && pt->st.active) {
       SPFrictionTraction(c, i, y, t, &stick);
+      /* a stuck point's fixed point is no slip since it stuck: s_T <- -t_T/eps_T + c_T takes its
+         committed creep c_T back. With c_T left, what each converged step left (up to
+         creep_rtol h) added up: the F2 rigid edge reached 6.2e-13 to 7.4e-13 > creep_rtol h_c =
+         4.9e-13 over its 40 steps; taken back, at most 4.7e-13 at every step */
       if (!(stick && creepHolds))
-        for (PetscInt a = 0; a < nt; ++a) pt->st.sT[a] = -t[a] / pt->epsT;
+        for (PetscInt a = 0; a < nt; ++a) pt->st.sT[a] = -t[a] / pt->epsT + (stick ? SPDot(c->dim, pt->st.creep, pt->st.T[a]) : 0.0);
       rule = stick && creepHolds ? PETSC_FALSE : PETSC_TRUE;
     } else if (!activeNow) pt->st.sT[0] = pt->st.sT[1] = 0.0;
     if (c->accelT && rule && stick) { /* the clip after the accelerated step */
@@ -521,7 +523,8 @@ PetscErrorCode SPFrictionSettled(SPContact c, PetscBool *settled)
 
 /* Status (open / stick / slip) of every point at the evaluated state, flips, and the friction
    figures of the iterate: stick and slip counts, status changes (with `compare`), max stick creep
-   relative to h (for the convergence test) and absolute (committed creep plus this step's) */
+   since the points stuck (the committed creep plus this step's) relative to h (for the
+   convergence test) and absolute */
 PetscErrorCode SPFrictionBookkeep(SPContact c, PetscBool compare)
 {
   const PetscInt dim = c->dim;
@@ -532,7 +535,7 @@ PetscErrorCode SPFrictionBookkeep(SPContact c, PetscBool compare)
   for (PetscInt i = 0; i < c->n; ++i) {
     SPContactPoint *pt = &c->pt[i];
     SPPointStatus   st;
-    PetscReal       y[2], t[2], step, total;
+    PetscReal       y[2], t[2], rel, total;
     PetscBool       stick;
     if (!pt->st.active) st = SP_POINT_OPEN;
     else if (pt->geo.mu <= 0.0) st = SP_POINT_STICK; /* closed, frictionless */
@@ -557,8 +560,8 @@ PetscErrorCode SPFrictionBookkeep(SPContact c, PetscBool compare)
     if (pt->geo.mu <= 0.0 || st == SP_POINT_OPEN) continue;
     n[st == SP_POINT_STICK ? 0 : 1]++;
     if (st != SP_POINT_STICK) continue;
-    Creep(c, i, &step, &total);
-    r[0] = PetscMax(r[0], step);
+    Creep(c, i, &rel, &total);
+    r[0] = PetscMax(r[0], rel);
     r[1] = PetscMax(r[1], total);
   }
   PetscCallMPI(MPI_Allreduce(n, nall, 3, MPIU_INT, MPI_SUM, PetscObjectComm((PetscObject)c->dm)));
@@ -572,8 +575,8 @@ PetscErrorCode SPFrictionBookkeep(SPContact c, PetscBool compare)
 }
 
 /* Friction part of the Newton convergence test: no status changed in the last iteration and, for
-   methods that update the shift at Newton boundaries, stuck points moved at most creep_rtol h in
-   the step and the slip points' shifts settled (after-solve updates check these in the loop) */
+   methods that update the shift at Newton boundaries, stuck points moved at most creep_rtol h since
+   they stuck and the slip points' shifts settled (after-solve updates check these in the loop) */
 PetscBool SPFrictionConverged(SPContact c)
 {
   if (!c->friction) return PETSC_TRUE;

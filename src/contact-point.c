@@ -341,7 +341,7 @@ static void Reals(PetscBool pack, PetscReal v[], PetscInt n, PetscReal b[], Pets
 static PetscInt PointState(PetscBool pack, SPContactPoint *p, PetscReal *anchor, PetscReal b[])
 {
   SPPointState *st = &p->st;
-  PetscReal     pv[2] = {p->prev.sN, (PetscReal)p->prev.status};
+  PetscReal     pv = (PetscReal)p->prev.status;
   PetscReal     e[6] = {(PetscReal)st->status, (PetscReal)st->active, (PetscReal)st->inactiveCount, (PetscReal)st->flips, (PetscReal)st->reversed, st->anchored ? (st->fresh ? 2.0 : 1.0) : 0.0}; /* anchored, 2: fresh */
   PetscReal     X[3] = {p->X[0], p->X[1], p->X[2]};
   PetscInt      k = 0;
@@ -363,11 +363,10 @@ static PetscInt PointState(PetscBool pack, SPContactPoint *p, PetscReal *anchor,
   Reals(pack, st->T[0], 3, b, &k);
   Reals(pack, st->T[1], 3, b, &k);
   Reals(pack, st->tT, 2, b, &k);
-  Reals(pack, pv, 2, b, &k);
+  Reals(pack, &pv, 1, b, &k);
   Reals(pack, p->prev.tCommit, 3, b, &k);
   if (!pack) {
-    p->prev.sN        = pv[0];
-    p->prev.status    = (SPPointStatus)pv[1];
+    p->prev.status    = (SPPointStatus)pv;
     st->status        = (SPPointStatus)e[0];
     st->active        = e[1] != 0.0 ? PETSC_TRUE : PETSC_FALSE;
     st->inactiveCount = (PetscInt)e[2];

@@ -26,7 +26,7 @@ static PetscErrorCode SolveAndUpdate(SPApp app, SNESConvergedReason *reason)
 }
 
 /* ratio: the load increment over the last converged one where the load moves in proportion (the
-   shifts' predictor, contact-predict.c), else 0 */
+   stuck points' predictor, contact-predict.c), else 0 */
 static PetscErrorCode SolveStep(SPApp app, PetscReal load, PetscReal ratio, PetscInt step, Vec ubackup, PetscBool *ok)
 {
   SNESConvergedReason reason;

@@ -34,13 +34,14 @@ test_friction_f1a_shifted() { f1a_case shifted 1 && f1a_case shifted 2 && f1a_ca
 test_friction_f1a_alm()     { f1a_case alm 1; }
 
 # The seed's friction claim on F1a: shifted removes the creep with at most 3 Newton iterations
-# more than penalty friction per load step (6 steps), and needs no more than alm
+# more than penalty friction per load step (6 steps), and needs fewer than alm (8 against 12 at
+# alpha 10, with the stuck points' predictor; 12 without it)
 test_friction_claim_f1a() {
   local rc=0 n
   for m in penalty shifted alm; do friction_run "$m" 1 -options_file input/friction_block2d.opts -contact_method $m || return 1; done
   local np ns na; np=$(sval "$CASE_DIR/penalty.txt" newton_iterations); ns=$(sval "$CASE_DIR/shifted.txt" newton_iterations); na=$(sval "$CASE_DIR/alm.txt" newton_iterations)
   assert_le shifted_minus_penalty_per_step "$(awk -v a="$ns" -v b="$np" 'BEGIN{print (a-b)/6}')" 3 || rc=1
-  assert_le shifted_vs_alm "$ns" "$na" || rc=1
+  assert_le shifted_fewer_than_alm "$ns" "$((na - 1))" || rc=1
   return $rc
 }
 
@@ -150,6 +151,39 @@ test_friction_stick_hold() {
   assert_le newton_hold_vs_update "$(sval "$CASE_DIR/hold_true_np1.txt" newton_iterations)" "$(($(sval "$CASE_DIR/hold_false_np1.txt" newton_iterations) - 5))" || rc=1
   for np in 2 3; do
     assert_close "newton_np${np}_vs_np1" "$(sval "$CASE_DIR/hold_true_np$np.txt" newton_iterations)" "$(sval "$CASE_DIR/hold_true_np1.txt" newton_iterations)" 0 1 || rc=1
+  done
+  return $rc
+}
+
+# The stuck points' predictor (-contact_shift_predict, shifted's default with friction): F1a (every
+# point stuck, the shear ramped in 5 proportional steps after the normal one) and F4 (the two-pass
+# patch, alpha 10) with and without it: the same figures (forces to 1e-8, creep <= 1e-10 h, F1a's
+# top displacement), the proportional steps after the first shear step predicted (F1a: steps 3-6),
+# and fewer Newton iterations with it (F1a measured 8 against 12: one per predicted step; F4 36
+# against 103); on 2 ranks the same counts
+test_friction_shift_predict() {
+  local rc=0 run
+  for run in friction_block2d:true:1 friction_block2d:false:1 friction_block2d:true:2 friction_patch_4_5:true:1 friction_patch_4_5:false:1 friction_patch_4_5:true:2; do
+    IFS=: read -r f p np <<< "$run"
+    local name=${f}_${p}_np$np out
+    out=$CASE_DIR/$name.txt
+    friction_run "$name" "$np" -options_file input/$f.opts -contact_alpha 10 -contact_shift_predict "$p" -output_fields false || return 1
+    local h=0.025; [ "$f" = friction_patch_4_5 ] && h=0.2
+    assert_le "stick_creep_$name" "$(sval "$out" contact_max_stick_creep)" "$(awk -v h=$h 'BEGIN{print 1e-10 * h}')" || rc=1
+    if [ "$f" = friction_block2d ]; then
+      assert_close "tangential_force_$name" "$(sval "$out" contact_tangential_force_x)" -0.0015 1e-8 || rc=1
+      assert_close "top_displacement_$name" "$(sval "$out" displacement_max)" 0.005 1e-8 || rc=1
+    else
+      assert_close "force_x_$name" "$(sval "$out" contact_force_x)" -0.0015 1e-8 || rc=1
+    fi
+    assert_close "normal_force_$name" "$(sval "$out" contact_force_y)" 0.01 1e-8 || rc=1
+  done
+  assert_eq predicted_steps_f1a "$(sval "$CASE_DIR/friction_block2d_true_np1.txt" contact_predicted_steps) $(sval "$CASE_DIR/friction_block2d_false_np1.txt" contact_predicted_steps)" "4 0" || rc=1
+  for f in friction_block2d friction_patch_4_5; do
+    local with without
+    with=$(sval "$CASE_DIR/${f}_true_np1.txt" newton_iterations); without=$(sval "$CASE_DIR/${f}_false_np1.txt" newton_iterations)
+    assert_le "newton_${f}_with_vs_without" "$with" "$((without - 4))" || rc=1
+    assert_eq "newton_${f}_np2" "$(sval "$CASE_DIR/${f}_true_np2.txt" newton_iterations)" "$with" || rc=1
   done
   return $rc
 }
