@@ -414,7 +414,8 @@ static void Creep(SPContact c, PetscInt i, PetscReal *rel, PetscReal *total)
 }
 
 /* Whether every stuck point of the evaluated state meets the creep test of the Newton convergence
-   test (at most creep_rtol h since it stuck) and has crept at most creep_rtol h_c, collective: their tangential shifts then hold, as the normal ones do once the gaps hold */
+   test (at most creep_rtol h since it stuck) and has crept at most creep_rtol h_c, collective:
+   their tangential shifts then hold, as the normal ones do once the gaps hold */
 static PetscErrorCode StickCreepHolds(SPContact c, PetscBool *holds)
 {
   PetscReal r[2] = {0.0, 0.0}, all[2];

@@ -7,10 +7,12 @@
    instead of the last step's traction. Where the load moves in proportion and the statuses stay,
    the tractions do too, and the in-Newton update starts from an error of second order in the
    increment instead of first: F1a takes one Newton iteration per shear step (12 -> 8 at alpha 10),
-   F4 36 instead of 103. Not the normal shifts: on F1b a decaying transient extrapolated broke its
-   one-iteration steps of steady sliding (53 -> 65), and a Neo-Hookean block at the edge of its
-   increment (finite_strain_load_regrow) stalled where it had converged. Not slipping points
-   either (F1b: 53 -> 77). Not alm: its multipliers are its augmentations' to move. */
+   F4 36 instead of 103. Not the normal shifts: predicting the stuck points' too took F4 36 / 17 /
+   15 -> 38 / 21 / 19 at alpha 10 / 100 / 1000, and in a frictionless run stalled a Neo-Hookean
+   block at the edge of its increment (finite_strain_load_regrow). Not the slipping points: with
+   them F1b's one-iteration steps of steady sliding broke (a decaying transient extrapolated: 53 ->
+   65 at alpha 10; 77 without the status condition). Not alm: its multipliers are its
+   augmentations' to move. */
 #include <spcontact-impl.h>
 
 /* At a converged load step: the state at its start (c->saved, the previous converged step) becomes
@@ -35,25 +37,28 @@ void SPContactPredictNext(SPContact c, PetscReal r)
   c->predictRatio = c->predict && c->friction && c->havePrev && c->method->timing == SP_UPDATE_NEWTON ? r : 0.0;
 }
 
-/* Stuck point i's extrapolated tangential shift, in its current basis (SPFrictionAnchor ran) */
-static void PredictPoint(SPContact c, PetscInt i, PetscReal r)
+/* Stuck point i's extrapolated tangential shift, in its current basis (SPFrictionAnchor ran);
+   whether it is stuck (predicted) */
+static PetscBool PredictPoint(SPContact c, PetscInt i, PetscReal r)
 {
   SPContactPoint    *pt   = &c->pt[i];
   SPPointState      *st   = &pt->st;
   const SPPointPrev *prev = &pt->prev;
   PetscReal          tp[3];
 
-  if (st->status != SP_POINT_STICK || pt->geo.mu <= 0.0 || !st->anchored || st->fresh) return;
+  if (st->status != SP_POINT_STICK || pt->geo.mu <= 0.0 || !st->anchored || st->fresh) return PETSC_FALSE;
   for (PetscInt d = 0; d < 3; ++d) tp[d] = st->tCommit[d] + r * (st->tCommit[d] - prev->tCommit[d]);
   for (PetscInt a = 0; a < c->dim - 1; ++a) st->sT[a] = -SPDot(c->dim, tp, st->T[a]) / pt->epsT;
+  return PETSC_TRUE;
 }
 
 /* At the start of a solve (SPContactBeginSolve, after the anchors): the pending prediction, once,
-   where the last step changed no point's status; then the cone clip (collective) */
+   where the last step changed no point's status; then the cone clip. Counts the steps in which
+   some point was predicted. Collective. */
 PetscErrorCode SPContactPredictApply(SPContact c)
 {
   const PetscReal r     = c->predictRatio;
-  PetscInt        moved = 0, all;
+  PetscInt        moved = 0, stuck = 0, all;
 
   PetscFunctionBeginUser;
   c->predictRatio = 0.0;
@@ -61,8 +66,9 @@ PetscErrorCode SPContactPredictApply(SPContact c)
   for (PetscInt i = 0; i < c->n; ++i) moved += c->pt[i].st.status != c->pt[i].prev.status;
   PetscCallMPI(MPI_Allreduce(&moved, &all, 1, MPIU_INT, MPI_SUM, PetscObjectComm((PetscObject)c->dm)));
   if (all) PetscFunctionReturn(PETSC_SUCCESS);
-  for (PetscInt i = 0; i < c->n; ++i) PredictPoint(c, i, r);
+  for (PetscInt i = 0; i < c->n; ++i) stuck += PredictPoint(c, i, r);
   PetscCall(SPFrictionClipShifts(c));
-  c->predictions++;
+  PetscCallMPI(MPI_Allreduce(&stuck, &all, 1, MPIU_INT, MPI_SUM, PetscObjectComm((PetscObject)c->dm)));
+  if (all) c->predictions++;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
