@@ -308,7 +308,7 @@ struct _n_SPContact {
 
 /* helpers shared by the contact files */
 PETSC_EXTERN PetscErrorCode SPContactPredictApply(SPContact);
-PETSC_EXTERN PetscErrorCode SPFrictionClipShifts(SPContact);
+PETSC_EXTERN void           SPFrictionClipShift(SPContact, PetscInt);
 PETSC_EXTERN const SPNormalLaw SPLawShiftedPenalty;
 PETSC_EXTERN PetscReal      SPShiftIncrement(PetscInt, const PetscReal[], const PetscReal[]);
 PETSC_EXTERN PetscErrorCode SPContactPointsSetUp(SPContact, DMLabel);

@@ -357,14 +357,10 @@ static PetscReal ClipToCone(SPContact c, PetscInt i)
   return lam;
 }
 
-/* Every anchored point's tangential shift clipped to its cone (after a prediction) */
-PetscErrorCode SPFrictionClipShifts(SPContact c)
+/* Point i's tangential shift clipped to its cone (after a prediction) */
+void SPFrictionClipShift(SPContact c, PetscInt i)
 {
-  PetscFunctionBeginUser;
-  if (!c->friction) PetscFunctionReturn(PETSC_SUCCESS);
-  for (PetscInt i = 0; i < c->n; ++i)
-    if (c->pt[i].st.anchored) (void)ClipToCone(c, i);
-  PetscFunctionReturn(PETSC_SUCCESS);
+  (void)ClipToCone(c, i);
 }
 
 /* A slipping point's tangential shift against its update at the same state: |s_T' - s_T| in
@@ -398,9 +394,8 @@ static PetscReal ShiftChange(SPContact c, PetscInt i, const PetscReal old[])
   return SPNorm(c->dim - 1, d);
 }
 
-/* Point i's creep if it sticks: since it stuck (the committed creep plus this step's), a length,
-   and relative to its h */
-static void Creep(SPContact c, PetscInt i, PetscReal *rel, PetscReal *total)
+/* Point i's creep if it sticks: since it stuck (the committed creep plus this step's), a length */
+static PetscReal Creep(SPContact c, PetscInt i)
 {
   const SPContactPoint *pt  = &c->pt[i];
   const PetscInt        dim = c->dim;
@@ -409,8 +404,7 @@ static void Creep(SPContact c, PetscInt i, PetscReal *rel, PetscReal *total)
   for (PetscInt a = 0; a < dim - 1; ++a)
     for (PetscInt d = 0; d < dim; ++d) dg[d] += pt->geo.dgT[a] * pt->st.T[a][d];
   for (PetscInt d = 0; d < dim; ++d) dg[d] += pt->st.creep[d];
-  *total = SPNorm(dim, dg);
-  *rel   = *total / pt->h;
+  return SPNorm(dim, dg);
 }
 
 /* Whether every stuck point of the evaluated state meets the creep test of the Newton convergence
@@ -423,14 +417,14 @@ static PetscErrorCode StickCreepHolds(SPContact c, PetscBool *holds)
   PetscFunctionBeginUser;
   for (PetscInt i = 0; i < c->n; ++i) {
     const SPContactPoint *pt = &c->pt[i];
-    PetscReal             y[2], t[2], rel, total;
+    PetscReal             y[2], t[2], creep;
     PetscBool             stick;
     if (pt->geo.mu <= 0.0 || !pt->st.active || !SPContactPointActive(c, i)) continue;
     SPFrictionTraction(c, i, y, t, &stick);
     if (!stick) continue;
-    Creep(c, i, &rel, &total);
-    r[0] = PetscMax(r[0], rel);
-    r[1] = PetscMax(r[1], total / c->lengthScale);
+    creep = Creep(c, i);
+    r[0]  = PetscMax(r[0], creep / pt->h);
+    r[1]  = PetscMax(r[1], creep / c->lengthScale);
   }
   PetscCallMPI(MPI_Allreduce(r, all, 2, MPIU_REAL, MPI_MAX, PetscObjectComm((PetscObject)c->dm)));
   *holds = all[0] <= c->creepRtol && all[1] <= c->creepRtol ? PETSC_TRUE : PETSC_FALSE;
@@ -536,7 +530,7 @@ PetscErrorCode SPFrictionBookkeep(SPContact c, PetscBool compare)
   for (PetscInt i = 0; i < c->n; ++i) {
     SPContactPoint *pt = &c->pt[i];
     SPPointStatus   st;
-    PetscReal       y[2], t[2], rel, total;
+    PetscReal       y[2], t[2], creep;
     PetscBool       stick;
     if (!pt->st.active) st = SP_POINT_OPEN;
     else if (pt->geo.mu <= 0.0) st = SP_POINT_STICK; /* closed, frictionless */
@@ -561,9 +555,9 @@ PetscErrorCode SPFrictionBookkeep(SPContact c, PetscBool compare)
     if (pt->geo.mu <= 0.0 || st == SP_POINT_OPEN) continue;
     n[st == SP_POINT_STICK ? 0 : 1]++;
     if (st != SP_POINT_STICK) continue;
-    Creep(c, i, &rel, &total);
-    r[0] = PetscMax(r[0], rel);
-    r[1] = PetscMax(r[1], total);
+    creep = Creep(c, i);
+    r[0]  = PetscMax(r[0], creep / pt->h);
+    r[1]  = PetscMax(r[1], creep);
   }
   PetscCallMPI(MPI_Allreduce(n, nall, 3, MPIU_INT, MPI_SUM, PetscObjectComm((PetscObject)c->dm)));
   PetscCallMPI(MPI_Allreduce(r, rall, 2, MPIU_REAL, MPI_MAX, PetscObjectComm((PetscObject)c->dm)));

@@ -37,8 +37,8 @@ void SPContactPredictNext(SPContact c, PetscReal r)
   c->predictRatio = c->predict && c->friction && c->havePrev && c->method->timing == SP_UPDATE_NEWTON ? r : 0.0;
 }
 
-/* Stuck point i's extrapolated tangential shift, in its current basis (SPFrictionAnchor ran);
-   whether it is stuck (predicted) */
+/* Stuck point i's extrapolated tangential shift, in its current basis (SPFrictionAnchor ran),
+   clipped to its cone; whether it is stuck (predicted) */
 static PetscBool PredictPoint(SPContact c, PetscInt i, PetscReal r)
 {
   SPContactPoint    *pt   = &c->pt[i];
@@ -49,12 +49,13 @@ static PetscBool PredictPoint(SPContact c, PetscInt i, PetscReal r)
   if (st->status != SP_POINT_STICK || pt->geo.mu <= 0.0 || !st->anchored || st->fresh) return PETSC_FALSE;
   for (PetscInt d = 0; d < 3; ++d) tp[d] = st->tCommit[d] + r * (st->tCommit[d] - prev->tCommit[d]);
   for (PetscInt a = 0; a < c->dim - 1; ++a) st->sT[a] = -SPDot(c->dim, tp, st->T[a]) / pt->epsT;
+  SPFrictionClipShift(c, i);
   return PETSC_TRUE;
 }
 
 /* At the start of a solve (SPContactBeginSolve, after the anchors): the pending prediction, once,
-   where the last step changed no point's status; then the cone clip. Counts the steps in which
-   some point was predicted. Collective. */
+   where the last step changed no point's status. Counts the steps in which some point was
+   predicted. Collective. */
 PetscErrorCode SPContactPredictApply(SPContact c)
 {
   const PetscReal r     = c->predictRatio;
@@ -67,7 +68,6 @@ PetscErrorCode SPContactPredictApply(SPContact c)
   PetscCallMPI(MPI_Allreduce(&moved, &all, 1, MPIU_INT, MPI_SUM, PetscObjectComm((PetscObject)c->dm)));
   if (all) PetscFunctionReturn(PETSC_SUCCESS);
   for (PetscInt i = 0; i < c->n; ++i) stuck += PredictPoint(c, i, r);
-  PetscCall(SPFrictionClipShifts(c));
   PetscCallMPI(MPI_Allreduce(&stuck, &all, 1, MPIU_INT, MPI_SUM, PetscObjectComm((PetscObject)c->dm)));
   if (all) c->predictions++;
   PetscFunctionReturn(PETSC_SUCCESS);
