@@ -403,6 +403,9 @@ struct _n_SPSolver {
   PetscReal           rtolMax, rtolMin, rtol, rtolCap, lastF; /* its range (rtolMin: -ksp_rtol), value, safeguard cap, previous |F| */
   PetscBool           resolve, lastConverged; /* this solve repeats a converged one at the same load (after a shift update) */
   PetscReal           lastLoad, settledFactor;
+  PetscBool           measured, measuring; /* -solver_inexact_measured; and this solve's method updates in Newton */
+  PetscReal           lastGap, rhoMeas[2]; /* gap error of the last iterate; the last two measured contractions (0: none) */
+  PetscBool           lastSettledUpdate, lastUpdate;   /* the last iterate's shifts moved on a settled active set */
 };
 
 struct _n_SPOutput {

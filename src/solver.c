@@ -343,6 +343,34 @@ static PetscErrorCode CheckStall(SPSolver s, PetscInt it, PetscReal fnorm, SNESC
    the active set chatter for thousands of iterations); no solve is tighter than what reaches 1%
    of the residual target in one step; a re-solve at the same load (alm after an augmentation)
    starts at -ksp_rtol. The floor is always -ksp_rtol. */
+/* -solver_inexact_measured (methods that update the shifts in Newton: s->measuring): the
+   contraction of the gap error per shift update, measured as this iterate's gap error over the
+   last one's where the last iterate's shifts moved on a settled active set (whatever this
+   iterate's active set). */
+static void MeasureContraction(SPSolver s, const SPContactStats *st)
+{
+  if (!s->measuring || !s->lastSettledUpdate || s->lastGap <= 0.0) return;
+  s->rhoMeas[1] = s->rhoMeas[0];
+  s->rhoMeas[0] = st->gapError / s->lastGap;
+}
+
+/* The tolerance of a step that feeds a shift update: -solver_inexact_settled x the loosest, or,
+   once measured, rho^2 (the smaller of the last two measurements; at most the loosest). A step's
+   error reaches the next gap error amplified by about 1/rho (the bulk is softer than the penalty
+   by that much), so rho^2 keeps it near a tenth of the update's own rho x gap error at the
+   measured rates: B2, B3, B4 and B6 at alpha 10 to 1000 kept their Newton counts. Before a
+   measurement (a solve's first update, or B1, where one update is exact and rho ~ 0) the tight
+   factor holds. */
+static PetscReal SettledTolerance(SPSolver s)
+{
+  const PetscReal tight = s->settledFactor * s->rtolCap;
+  PetscReal       rho;
+
+  if (!s->measuring || s->rhoMeas[0] <= 0.0) return tight;
+  rho = s->rhoMeas[1] > 0.0 ? PetscMin(s->rhoMeas[0], s->rhoMeas[1]) : s->rhoMeas[0];
+  return PetscMax(tight, PetscMin(s->rtolCap, rho * rho));
+}
+
 static PetscErrorCode LinearTolerance(SPSolver s, PetscInt it, PetscReal fnorm)
 {
   SPContactStats st = {0};
@@ -361,13 +389,21 @@ static PetscErrorCode LinearTolerance(SPSolver s, PetscInt it, PetscReal fnorm)
     PetscCall(SPContactGetShiftContraction(s->contact, &rho));
     s->rtolCap = PetscMax(s->rtolMin, PetscMin(s->rtolMax, 0.1 * rho));
     eta        = s->resolve ? s->rtolMin : s->settledFactor * s->rtolCap;
+    s->rhoMeas[0] = s->rhoMeas[1] = 0.0;
+    PetscCall(SPContactShiftsInNewton(s->contact, &s->measuring));
+    s->measuring = s->measuring && s->measured ? PETSC_TRUE : PETSC_FALSE;
   } else {
-    const PetscReal r = fnorm / s->lastF;
+    const PetscReal r  = fnorm / s->lastF;
+    const PetscBool ew = r < 1.0 && !(s->measuring && (s->lastUpdate || st.activeChanged)) ? PETSC_TRUE : PETSC_FALSE;
+    MeasureContraction(s, &st);
     if (r > 0.5 && st.maxShiftChange == 0.0) s->rtolCap = PetscMax(s->rtolMin, 1e-2 * s->rtolCap);
-    eta = r < 1.0 ? PetscMin(s->rtolCap, 0.9 * r * r) : s->rtolCap;
+    eta = ew ? PetscMin(s->rtolCap, 0.9 * r * r) : s->rtolCap;
     /* settled active set: the step feeds the next shift update, whose error it becomes */
-    if (!st.activeChanged) eta = PetscMin(eta, s->settledFactor * s->rtolCap);
+    if (!st.activeChanged) eta = PetscMin(eta, SettledTolerance(s));
   }
+  s->lastGap           = st.gapError;
+  s->lastUpdate        = st.maxShiftChange > 0.0 ? PETSC_TRUE : PETSC_FALSE;
+  s->lastSettledUpdate = s->lastUpdate && !st.activeChanged ? PETSC_TRUE : PETSC_FALSE;
   if (fnorm > 0.0) eta = PetscMin(0.5, PetscMax(eta, 0.01 * target / fnorm));
   s->rtol  = PetscMax(s->rtolMin, eta);
   s->lastF = fnorm;
@@ -447,6 +483,7 @@ PetscErrorCode SPSolverCreate(DM dm, SPProblem problem, SPContact contact, SPLog
   s->jacReuseMax = 5;
   s->rtolMax     = 1e-3;
   s->settledFactor = 1e-3;
+  s->measured      = PETSC_TRUE;
   /* a load-controlled body touching at one point legitimately raises |F| at first */
   PetscCall(SNESSetDivergenceTolerance(s->snes, -1.0));
   PetscCall(SNESGetKSP(s->snes, &ksp));
@@ -511,6 +548,7 @@ PetscErrorCode SPSolverSetFromOptions(SPSolver s)
   PetscCall(PetscOptionsBool("-solver_inexact", "Inexact Newton: search steps to -solver_inexact_rtol, steps that feed a shift update tighter (README Performance); default true for a linear material without friction (false: every solve to -ksp_rtol)", "SPSolverSetFromOptions", s->inexact, &s->inexact, NULL));
   PetscCall(PetscOptionsReal("-solver_inexact_rtol", "Inexact Newton: the loosest linear relative tolerance", "SPSolverSetFromOptions", s->rtolMax, &s->rtolMax, NULL));
   PetscCall(PetscOptionsReal("-solver_inexact_settled", "Inexact Newton: factor on the loosest linear tolerance for a step from an iterate whose active set did not change (the step then feeds a shift update), and for a solve's first step", "SPSolverSetFromOptions", s->settledFactor, &s->settledFactor, NULL));
+  PetscCall(PetscOptionsBool("-solver_inexact_measured", "Inexact Newton, methods that update the shifts in Newton (shifted): once a shift update on a settled active set has measured the contraction rho of the gap error, steps that feed a shift update are solved to rho^2 (at most the loosest tolerance), and Eisenstat-Walker does not tighten a step after a shift update or an active-set change (false: the rule before, -solver_inexact_settled x the loosest)", "SPSolverSetFromOptions", s->measured, &s->measured, NULL));
   PetscCall(PetscOptionsInt("-solver_stall_its", "Stop a Newton solve after this many iterations without a 1% decrease of the residual or the gap error (0: never)", "SPSolverSetFromOptions", s->stallIts, &s->stallIts, NULL));
   PetscCall(PetscOptionsBool("-solver_fast_prealloc", "First-order mesh: preallocate the matrix from vertex adjacency and build the rigid-body modes from vertex coordinates (false: DMCreateMatrix, DMPlexCreateRigidBody)", "SPSolverSetFromOptions", prealloc, &prealloc, NULL));
   PetscCall(PetscOptionsBool("-solver_gamg_shared_graph", "Frictionless small strain (a symmetric matrix): GAMG aggregates on the system matrix itself instead of PETSc's copy of it (same aggregates, one matrix less at the peak; false: PETSc's copy)", "SPSolverSetFromOptions", share, &share, NULL));
