@@ -405,7 +405,7 @@ struct _n_SPSolver {
   PetscReal           lastLoad, settledFactor;
   PetscBool           measured, measuring; /* -solver_inexact_measured; and this solve's method updates in Newton */
   PetscReal           lastGap, rhoMeas[2]; /* gap error of the last iterate; the last two measured contractions (0: none) */
-  PetscBool           lastSettledUpdate, lastUpdate;   /* the last iterate's shifts moved on a settled active set */
+  PetscBool           lastSettledUpdate, lastUpdate; /* the last iterate's shifts moved (on a settled active set) */
 };
 
 struct _n_SPOutput {
