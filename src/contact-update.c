@@ -520,6 +520,14 @@ PetscErrorCode SPContactHasFriction(SPContact c, PetscBool *on)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Whether the run has contact pairs (deformable-deformable) */
+PetscErrorCode SPContactHasPairs(SPContact c, PetscBool *on)
+{
+  PetscFunctionBeginUser;
+  *on = c && c->enabled && c->npair > 0 ? PETSC_TRUE : PETSC_FALSE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* The contact length scale h_c: the smallest mean slave facet size at a contact point (the mesh
    size where contact is resolved; a minimum, so the same on any rank count). The gap tolerance is
    gap_rtol x h_c unless -contact_gap_tol gave an absolute one. Collective, once, after the areas. */
