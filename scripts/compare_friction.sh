@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The seed's friction claim, measured: penalty friction, the shifted penalty (tangential shift) and
 # the augmented Lagrangian at alpha = alpha_T = 10, 100, 1000 on a friction benchmark.
-# Usage: scripts/compare_friction.sh [friction_block2d|friction_patch_4_5|friction_slide2d|friction_slide3d|cattaneo2d|cattaneo3d] [NP] [PETSc options]
+# Usage: [ALPHAS="10 100"] scripts/compare_friction.sh [friction_block2d|friction_patch_4_5|friction_slide2d|friction_slide3d|cattaneo2d|cattaneo3d] [NP] [PETSc options]
 # Prints one table (also <outdir>/compare.csv): Newton and linear iterations, cut-backs, max stick
 # creep (absolute and in element sizes h), stick-zone error in elements (cattaneo2d: half-width
 # against c = 0.076113 and centre; cattaneo3d: stick radius against c from the measured F, and
@@ -18,7 +18,7 @@ declare -A T=([friction_block2d]=-0.0015 [friction_patch_4_5]=-0.0015 [friction_
 declare -A H=([friction_block2d]=0.025 [friction_patch_4_5]=0.2 [friction_slide2d]=0.025 [friction_slide3d]=0.05 [cattaneo2d]=0.005 [cattaneo3d]=0.0104)
 echo "method,alpha,newton_iterations,linear_iterations,cutbacks,max_stick_creep,creep_over_h,stick_halfwidth_err_el,stick_centre_err_el,tangential_force_error,wall_time,converged" > "$out/compare.csv"
 for m in penalty shifted alm; do
-  for a in 10 100 1000; do
+  for a in ${ALPHAS:-10 100 1000}; do
     name=${m}_a$a
     $MPIEXEC -n "$np" bin/spcontact -options_file input/$problem.opts -contact_method $m -contact_alpha $a \
       -output_dir "$out" -output_name "$name" -output_fields $fields "$@" > "$out/$name.txt" 2>&1
