@@ -530,8 +530,8 @@ static PetscErrorCode SetUpMatrix(SPSolver s, PetscBool prealloc, PetscBool shar
 
 /* GAMG's graph without the system matrix's zero entries (-pc_gamg_threshold 0; PETSc's -1 keeps
    them as edges) with contact pairs or friction. A pair's slave rows keep the couplings of every
-   master facet they have met (contact-pattern.c), zero while inactive, and aggregates joined the
-   two bodies through them. Same Newton iterations, GMRES / CG iterations (1 rank, alpha 10): F2
+   master facet they have met (contact-pattern.c), zero while inactive: kept, they are graph edges
+   between the two bodies. Same Newton iterations, GMRES / CG iterations (1 rank, alpha 10): F2
    12897 -> 5363, F5 12922 -> 5445, F3 (2 ranks) 6691 -> 3571, B6 863 -> 400; F3 at alpha 1000
    solves its first system (238 GMRES iterations, 2000 and stopped before). Without pairs or
    friction nothing changes (B2, B4) and the graph stays the matrix itself (matrix-graph.c). */
