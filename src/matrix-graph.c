@@ -6,7 +6,8 @@
    For the system matrix of a frictionless small-strain run (MAT_SYMMETRIC, eternal) that copy was
    one more matrix at the peak of the first PCSetUp. Here the graph is the matrix itself, shared
    by reference, in exactly that case (block size 1); every other case (friction, finite strain,
-   -pc_gamg_threshold, HEM coarsening) takes PETSc's own path. GAMG reads the graph and destroys
+   -pc_gamg_threshold, which is 0 by default with contact pairs or friction (solver.c), HEM
+   coarsening) takes PETSc's own path. GAMG reads the graph and destroys
    its reference; nothing in it writes the graph's values. The hook is Mat's creategraph
    operation, which 3.18 keeps in the private ops table and does not name in MatOperation. */
 #include <spcontact-impl.h>
