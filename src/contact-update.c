@@ -505,6 +505,28 @@ PetscErrorCode SPContactGetShiftContraction(SPContact c, PetscReal *rho)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* For methods that update the shifts after a converged solve (alm), frictionless: the 2-norm of
+   the nodal forces eps A ds that the update would add at the evaluated state (the next solve's
+   first residual). 0 where no update follows (the gap tolerance holds), with friction and for the
+   other methods. Collective. */
+PetscErrorCode SPContactGetUpdateForce(SPContact c, PetscReal *fnext)
+{
+  PetscReal loc = 0.0;
+
+  PetscFunctionBeginUser;
+  *fnext = 0.0;
+  if (!c || !c->enabled || c->method->timing != SP_UPDATE_SOLVE || c->friction || c->stats.gapError <= c->gapTol) PetscFunctionReturn(PETSC_SUCCESS);
+  for (PetscInt i = 0; i < c->n; ++i) {
+    const SPContactPoint *pt = &c->pt[i];
+    const PetscReal       s = pt->st.sN, g = pt->geo.gap;
+    const PetscReal       f = pt->eps * pt->area * (PetscMin(0.0, c->method->update(1, &s, &g)) - s);
+    loc += f * f;
+  }
+  PetscCallMPI(MPI_Allreduce(&loc, fnext, 1, MPIU_REAL, MPI_SUM, PetscObjectComm((PetscObject)c->dm)));
+  *fnext = PetscSqrtReal(*fnext);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* Whether the method updates the shifts at the Newton-iteration boundary (shifted) */
 PetscErrorCode SPContactShiftsInNewton(SPContact c, PetscBool *on)
 {

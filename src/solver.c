@@ -406,6 +406,9 @@ static PetscErrorCode LinearTolerance(SPSolver s, PetscInt it, PetscReal fnorm)
   s->lastGap           = st.gapError;
   s->lastUpdate        = st.maxShiftChange > 0.0 ? PETSC_TRUE : PETSC_FALSE;
   s->lastSettledUpdate = s->lastUpdate && !st.activeChanged ? PETSC_TRUE : PETSC_FALSE;
+  /* an inner solve (-solver_inexact_inner) ends at its own target: no tighter than what reaches it
+     in one step */
+  if (s->innerTarget > 0.0 && fnorm > 0.0) eta = PetscMax(eta, PetscMin(s->rtolCap, 0.5 * s->innerTarget / fnorm));
   if (fnorm > 0.0) eta = PetscMin(0.5, PetscMax(eta, 0.01 * target / fnorm));
   s->rtol  = PetscMax(s->rtolMin, eta);
   s->lastF = fnorm;
@@ -433,6 +436,60 @@ static PetscErrorCode RoundOffFloor(SPSolver s, PetscInt it, PetscReal fnorm, SN
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* -solver_inexact_inner (methods that update the shifts after a converged solve: alm; frictionless,
+   with the inexact Newton). The update that follows a solve leaves rho of the gap error, so the
+   solve's own error need only be small against what that update adds: a residual r moves the gaps
+   by at most |r|/(eps A), so a re-solve ends, on a settled active set, once |F| <= 0.1 rho |dF|,
+   dF the nodal forces the next update would add and rho the contraction of the last update (this
+   iterate's gap error over the last solve's). An inexact multiplier method: the inner tolerance
+   falls with the constraint violation. A solve after which the gap tolerance holds is followed by
+   no update and goes to the residual target, and so does a load step's first solve: its update can
+   be exact (B1, rho ~ 0, where the estimate 1/(1 + alpha) cost 2 Newton iterations). Sets
+   s->innerTarget, the residual the step from this iterate should reach (0: the residual target
+   alone): at a re-solve's start rho times the above with the last two solves' rho (unmeasured in
+   a load step's first re-solve: 0, the tight rule). */
+static PetscErrorCode InnerConverged(SPSolver s, PetscInt it, PetscReal fnorm, SNESConvergedReason *reason)
+{
+  SPContactStats st;
+  PetscReal      fnext, rho;
+  PetscBool      ok;
+
+  PetscFunctionBeginUser;
+  s->innerTarget = 0.0;
+  if (!s->inexact || !s->inexactInner || !s->resolve || s->solveGap[0] <= 0.0) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(SPContactGetUpdateForce(s->contact, &fnext));
+  PetscCall(SPContactGetIterationStats(s->contact, &st));
+  if (it == 0) {
+    rho            = s->solveGap[1] > 0.0 ? PetscMin(1.0, s->solveGap[0] / s->solveGap[1]) : 0.0;
+    s->innerTarget = 0.1 * rho * rho * fnext;
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  rho            = PetscMin(1.0, st.gapError / s->solveGap[0]);
+  s->innerTarget = 0.1 * rho * fnext;
+  if (s->innerTarget <= 0.0 || *reason != SNES_CONVERGED_ITERATING || fnorm > s->innerTarget) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(SPContactConverged(s->contact, &ok));
+  if (!ok) PetscFunctionReturn(PETSC_SUCCESS);
+  *reason = SNES_CONVERGED_FNORM_ABS;
+  PetscCall(PetscInfo(s->snes, "inner solve converged: |F| %g <= 0.1 rho |dF| = %g (rho %g; -solver_inexact_inner)\n", (double)fnorm, (double)s->innerTarget, (double)rho));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* After a converged solve: its gap error, for the next re-solve's contraction (InnerConverged) */
+static PetscErrorCode RecordSolveGap(SPSolver s, SNESConvergedReason reason)
+{
+  SPContactStats st;
+  PetscBool      on;
+
+  PetscFunctionBeginUser;
+  if (!s->resolve) s->solveGap[0] = s->solveGap[1] = 0.0;
+  PetscCall(SPContactIsActive(s->contact, &on));
+  if (!on || reason <= 0) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(SPContactGetIterationStats(s->contact, &st));
+  s->solveGap[1] = s->solveGap[0];
+  s->solveGap[0] = st.gapError;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscErrorCode Converged(SNES snes, PetscInt it, PetscReal xnorm, PetscReal snorm, PetscReal fnorm, SNESConvergedReason *reason, void *ctx)
 {
   SPSolver  s = (SPSolver)ctx;
@@ -455,6 +512,7 @@ static PetscErrorCode Converged(SNES snes, PetscInt it, PetscReal xnorm, PetscRe
     PetscCall(SPContactConverged(s->contact, &ok));
     if (!ok || *reason == SNES_CONVERGED_SNORM_RELATIVE) *reason = SNES_CONVERGED_ITERATING;
   }
+  PetscCall(InnerConverged(s, it, fnorm, reason));
   s->prevF = fnorm;
   PetscCall(CheckStall(s, it, fnorm, reason));
   if (*reason == SNES_CONVERGED_ITERATING) PetscCall(LinearTolerance(s, it, fnorm));
@@ -486,6 +544,7 @@ PetscErrorCode SPSolverCreate(DM dm, SPProblem problem, SPContact contact, SPLog
   s->rtolMax     = 1e-3;
   s->settledFactor = 1e-3;
   s->measured      = PETSC_TRUE;
+  s->inexactInner  = PETSC_TRUE;
   /* a load-controlled body touching at one point legitimately raises |F| at first */
   PetscCall(SNESSetDivergenceTolerance(s->snes, -1.0));
   PetscCall(SNESGetKSP(s->snes, &ksp));
@@ -568,6 +627,7 @@ PetscErrorCode SPSolverSetFromOptions(SPSolver s)
   PetscCall(PetscOptionsReal("-solver_inexact_rtol", "Inexact Newton: the loosest linear relative tolerance", "SPSolverSetFromOptions", s->rtolMax, &s->rtolMax, NULL));
   PetscCall(PetscOptionsReal("-solver_inexact_settled", "Inexact Newton: factor on the loosest linear tolerance for a step from an iterate whose active set did not change (the step then feeds a shift update), and for a solve's first step", "SPSolverSetFromOptions", s->settledFactor, &s->settledFactor, NULL));
   PetscCall(PetscOptionsBool("-solver_inexact_measured", "Inexact Newton, methods that update the shifts in Newton (shifted): once a shift update on a settled active set has measured the contraction rho of the gap error, steps that feed a shift update are solved to rho^2 (at most the loosest tolerance), and Eisenstat-Walker does not tighten a step after a shift update or an active-set change (false: the rule before, -solver_inexact_settled x the loosest)", "SPSolverSetFromOptions", s->measured, &s->measured, NULL));
+  PetscCall(PetscOptionsBool("-solver_inexact_inner", "Inexact Newton, methods that update the shifts after a converged solve (alm), frictionless: a solve counts as converged on a settled active set once |F| <= 0.1 rho |dF| (dF: the forces the next update adds, rho: the update's contraction), the last one (gap tolerance met) at the residual target; its steps are solved no tighter than that needs (false: every solve to the residual target)", "SPSolverSetFromOptions", s->inexactInner, &s->inexactInner, NULL));
   PetscCall(PetscOptionsInt("-solver_stall_its", "Stop a Newton solve after this many iterations without a 1% decrease of the residual or the gap error (0: never)", "SPSolverSetFromOptions", s->stallIts, &s->stallIts, NULL));
   PetscCall(PetscOptionsBool("-solver_fast_prealloc", "First-order mesh: preallocate the matrix from vertex adjacency and build the rigid-body modes from vertex coordinates (false: DMCreateMatrix, DMPlexCreateRigidBody)", "SPSolverSetFromOptions", prealloc, &prealloc, NULL));
   PetscCall(PetscOptionsBool("-solver_gamg_shared_graph", "Frictionless small strain without contact pairs (a symmetric matrix, graph not filtered): GAMG aggregates on the system matrix itself instead of PETSc's copy of it (same aggregates, one matrix less at the peak; false: PETSc's copy). With pairs or friction the graph is PETSc's filtered copy (-pc_gamg_threshold 0)", "SPSolverSetFromOptions", share, &share, NULL));
@@ -653,6 +713,7 @@ PetscErrorCode SPSolverSolve(SPSolver s, Vec u, SNESConvergedReason *reason)
   s->resolve = s->lastConverged && load == s->lastLoad ? PETSC_TRUE : PETSC_FALSE; /* a re-solve after a shift update */
   PetscCall(SNESSolve(s->snes, NULL, u));
   PetscCall(SNESGetConvergedReason(s->snes, reason));
+  PetscCall(RecordSolveGap(s, *reason));
   s->lastLoad      = load;
   s->lastConverged = *reason > 0 ? PETSC_TRUE : PETSC_FALSE;
   PetscCall(SNESGetIterationNumber(s->snes, &its));

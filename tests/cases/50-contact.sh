@@ -171,6 +171,35 @@ test_contact_inexact_measured() {
   return $rc
 }
 
+# alm's inexact inner solves (-solver_inexact_inner, default on): a re-solve ends at 0.1 rho x the
+# forces of the next augmentation. B2 and B4 at 16^3 (the default iterative solver) at alpha 10 on
+# 1, 2 and 3 ranks against every solve to the residual target: the same augmentations, force and
+# peak pressure (1e-8), the gap tolerance met, no more Newton and fewer linear iterations; the same
+# Newton count and figures on 1, 2, 3 ranks. B1 (one exact augmentation, rho ~ 0): unchanged.
+test_contact_inexact_inner() {
+  local rc=0 case opts np
+  for case in b2 b4; do
+    opts="-options_file input/hertz2d.opts"; [ $case = b4 ] && opts="-options_file input/indent3d.opts -dm_plex_box_faces 16,16,16"
+    for np in 1 2 3; do
+      spc "$CASE_DIR/${case}_on_$np.txt" $np $opts -contact_method alm -contact_alpha 10 -output_dir "$CASE_DIR" -output_name "${case}_on_$np" -output_fields false || return 1
+      spc "$CASE_DIR/${case}_off_$np.txt" $np $opts -contact_method alm -contact_alpha 10 -solver_inexact_inner false -output_dir "$CASE_DIR" -output_name "${case}_off_$np" -output_fields false || return 1
+      echo "-- $case alm on $np rank(s): inexact inner solves against solves to the residual target"
+      local force=contact_force_y; [ $case = b4 ] && force=contact_force_z
+      same_summary "$CASE_DIR/${case}_off_$np.txt" "$CASE_DIR/${case}_on_$np.txt" 0 contact_augmentations contact_active_points || rc=1
+      same_summary "$CASE_DIR/${case}_off_$np.txt" "$CASE_DIR/${case}_on_$np.txt" 1e-8 $force contact_peak_pressure || rc=1
+      assert_le "gap_error_$case" "$(sval "$CASE_DIR/${case}_on_$np.txt" contact_gap_error)" "$(sval "$CASE_DIR/${case}_on_$np.txt" contact_gap_tol)" || rc=1
+      assert_le "newton_${case}_np${np}" "$(sval "$CASE_DIR/${case}_on_$np.txt" newton_iterations)" "$(sval "$CASE_DIR/${case}_off_$np.txt" newton_iterations)" || rc=1
+      assert_le "linear_${case}_np${np}_fewer" "$(sval "$CASE_DIR/${case}_on_$np.txt" linear_iterations)" $(($(sval "$CASE_DIR/${case}_off_$np.txt" linear_iterations) - 1)) || rc=1
+    done
+    for np in 2 3; do same_summary "$CASE_DIR/${case}_on_1.txt" "$CASE_DIR/${case}_on_$np.txt" 0 newton_iterations contact_augmentations || rc=1; done
+    for np in 2 3; do same_summary "$CASE_DIR/${case}_on_1.txt" "$CASE_DIR/${case}_on_$np.txt" 1e-8 $force contact_peak_pressure || rc=1; done
+  done
+  spc "$CASE_DIR/b1.txt" 1 -options_file input/block2d.opts -contact_method alm -output_dir "$CASE_DIR" -output_name b1 -output_fields false || return 1
+  spc "$CASE_DIR/b1_off.txt" 1 -options_file input/block2d.opts -contact_method alm -solver_inexact_inner false -output_dir "$CASE_DIR" -output_name b1_off -output_fields false || return 1
+  same_summary "$CASE_DIR/b1_off.txt" "$CASE_DIR/b1.txt" 0 newton_iterations linear_iterations contact_augmentations || rc=1
+  return $rc
+}
+
 # Tangent check at penetrated states (the obstacles start inside the body), curved obstacles included
 jacobian_case() {
   local out=$CASE_DIR/run.txt rc=0
