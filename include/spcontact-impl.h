@@ -406,6 +406,9 @@ struct _n_SPSolver {
   PetscBool           measured, measuring; /* -solver_inexact_measured; and this solve's method updates in Newton */
   PetscReal           lastGap, rhoMeas[2]; /* gap error of the last iterate; the last two measured contractions (0: none) */
   PetscBool           lastSettledUpdate, lastUpdate; /* the last iterate's shifts moved (on a settled active set) */
+  PetscBool           refine;                /* -solver_inexact_refine */
+  PetscReal           refineRtol;            /* the tolerance this step must reach if it feeds a shift update (0: none pending; RefineStep) */
+  PetscInt            refineLinear, refineStep; /* linear iterations of refinements in this solve, and in the step not yet logged */
   PetscBool           inexactInner;          /* -solver_inexact_inner (methods that update after a converged solve) */
   PetscReal           innerTarget, solveGap[2]; /* this iterate's inner-solve target (0: the residual target alone); gap error after the load step's last two converged solves (0: none) */
 };

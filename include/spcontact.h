@@ -92,6 +92,7 @@ PETSC_EXTERN PetscErrorCode SPContactShiftsInNewton(SPContact, PetscBool *);
 PETSC_EXTERN PetscErrorCode SPContactGetActiveVersion(SPContact, PetscInt *);
 PETSC_EXTERN PetscErrorCode SPContactGetShiftContraction(SPContact, PetscReal *);
 PETSC_EXTERN PetscErrorCode SPContactGetUpdateForce(SPContact, PetscReal *);
+PETSC_EXTERN PetscErrorCode SPContactStepFeedsUpdate(SPContact, Vec, PetscBool *);
 PETSC_EXTERN PetscErrorCode SPContactCommitStep(SPContact, Vec);
 PETSC_EXTERN PetscErrorCode SPContactPredictRecord(SPContact);
 PETSC_EXTERN void           SPContactPredictNext(SPContact, PetscReal);

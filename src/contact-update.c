@@ -527,6 +527,21 @@ PetscErrorCode SPContactGetUpdateForce(SPContact c, PetscReal *fnext)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Whether the shifts would move at the proposed iterate W (in-Newton methods: a settled active set,
+   the gap tolerance not met), without moving them: the solver then refines a step it solved loosely
+   (solver.c, RefineStep). Collective. */
+PetscErrorCode SPContactStepFeedsUpdate(SPContact c, Vec W, PetscBool *feeds)
+{
+  PetscBool settled;
+
+  PetscFunctionBeginUser;
+  *feeds = PETSC_FALSE;
+  if (!c || !c->enabled) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(SPContactEvaluate(c, W));
+  PetscCall(ShiftUpdateApplies(c, feeds, &settled));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* Whether the method updates the shifts at the Newton-iteration boundary (shifted) */
 PetscErrorCode SPContactShiftsInNewton(SPContact c, PetscBool *on)
 {

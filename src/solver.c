@@ -253,18 +253,50 @@ static PetscErrorCode FormJacobian(SNES snes, Vec X, Mat J, Mat P, void *ctx)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* A step solved loosely while the shift update it might feed needs s->refineRtol (LinearTolerance):
+   if the shifts move at W, the linear solve continues from Y, with the same operator and right-hand
+   side F(X), to that tolerance, and W = X - Y. Where they do not (the active set moved at W) the
+   looser step was all the next iterate needed. Its iterations count as linear iterations. */
+static PetscErrorCode RefineStep(SPSolver s, Vec X, Vec Y, Vec W, PetscBool *refined)
+{
+  PetscBool feeds;
+  KSP       ksp;
+  Vec       F;
+  PetscInt  lits;
+
+  PetscFunctionBeginUser;
+  *refined = PETSC_FALSE;
+  if (s->refineRtol <= 0.0 || s->refineRtol >= s->rtol) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(SPContactStepFeedsUpdate(s->contact, W, &feeds));
+  if (!feeds) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(SNESGetKSP(s->snes, &ksp));
+  PetscCall(SNESGetFunction(s->snes, &F, NULL, NULL)); /* F(X): the line search evaluates F(W) after this hook */
+  PetscCall(KSPSetInitialGuessNonzero(ksp, PETSC_TRUE));
+  /* with a nonzero initial guess PETSc's test is relative to the right-hand side, as the first solve's */
+  PetscCall(KSPSetTolerances(ksp, s->refineRtol, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT));
+  PetscCall(KSPSolve(ksp, F, Y));
+  PetscCall(KSPSetInitialGuessNonzero(ksp, PETSC_FALSE));
+  PetscCall(KSPGetIterationNumber(ksp, &lits));
+  s->refineLinear += lits, s->refineStep += lits;
+  PetscCall(VecWAXPY(W, -1.0, Y, X));
+  PetscCall(PetscInfo(s->snes, "step refined to linear rtol %g for the shift update it feeds: %" PetscInt_FMT " more linear iterations\n", (double)s->refineRtol, lits));
+  *refined = PETSC_TRUE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* The Newton-iteration boundary: W is the accepted new iterate. */
 static PetscErrorCode ShiftHook(SNESLineSearch ls, Vec X, Vec Y, Vec W, PetscBool *changedY, PetscBool *changedW, void *ctx)
 {
   SPSolver  s = (SPSolver)ctx;
-  PetscBool limited, shifted;
+  PetscBool limited, shifted, refined = PETSC_FALSE;
 
   PetscFunctionBeginUser;
-  *changedY = PETSC_FALSE;
   PetscCall(PetscLogEventBegin(s->log->shiftUpdate, 0, 0, 0, 0));
   PetscCall(SPContactLimitStep(s->contact, X, Y, W, &limited));
+  if (!limited) PetscCall(RefineStep(s, X, Y, W, &refined));
+  *changedY = refined;
   PetscCall(SPContactNewtonUpdate(s->contact, W, &shifted));
-  *changedW = limited || shifted ? PETSC_TRUE : PETSC_FALSE;
+  *changedW = limited || shifted || refined ? PETSC_TRUE : PETSC_FALSE;
   PetscCall(PetscLogEventEnd(s->log->shiftUpdate, 0, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -282,6 +314,8 @@ static PetscErrorCode LogIteration(SPSolver s, PetscInt it, PetscReal fnorm)
   if (it == 0) s->lastLinear = 0;
   lits -= s->lastLinear;
   s->lastLinear += lits;
+  lits += s->refineStep; /* the step's refinement (RefineStep) */
+  s->refineStep = 0;
   if (on) PetscCall(SPContactMonitor(s->contact, it, fnorm));
   if (s->history)
     PetscCall(PetscFPrintf(PetscObjectComm((PetscObject)s->dm), s->history, "%" PetscInt_FMT ",%" PetscInt_FMT ",%" PetscInt_FMT ",%.10e,%" PetscInt_FMT ",%.10e,%.10e,%" PetscInt_FMT ",%" PetscInt_FMT ",%" PetscInt_FMT ",%.10e\n", s->step, st.augmentations, it, (double)fnorm, st.activePoints, (double)st.maxPenetration, (double)st.maxShiftChange, lits, st.stickPoints, st.slipPoints, (double)st.maxStickCreep));
@@ -377,7 +411,8 @@ static PetscErrorCode LinearTolerance(SPSolver s, PetscInt it, PetscReal fnorm)
 {
   SPContactStats st = {0};
   PetscBool      on;
-  PetscReal      eta, target, atol;
+  PetscReal      eta, target, atol, loose;
+  PetscBool      lazy = PETSC_FALSE;
   KSP            ksp;
 
   PetscFunctionBeginUser;
@@ -391,17 +426,21 @@ static PetscErrorCode LinearTolerance(SPSolver s, PetscInt it, PetscReal fnorm)
     PetscCall(SPContactGetShiftContraction(s->contact, &rho));
     s->rtolCap = PetscMax(s->rtolMin, PetscMin(s->rtolMax, 0.1 * rho));
     eta        = s->resolve ? s->rtolMin : s->settledFactor * s->rtolCap;
+    loose      = s->rtolCap;
     s->rhoMeas[0] = s->rhoMeas[1] = 0.0;
     PetscCall(SPContactShiftsInNewton(s->contact, &s->measuring));
     s->measuring = s->measuring && s->measured ? PETSC_TRUE : PETSC_FALSE;
+    lazy         = s->measuring;
   } else {
     const PetscReal r  = fnorm / s->lastF;
     const PetscBool ew = r < 1.0 && !(s->measuring && (s->lastUpdate || st.activeChanged)) ? PETSC_TRUE : PETSC_FALSE;
     MeasureContraction(s, &st);
     if (r > 0.5 && st.maxShiftChange == 0.0) s->rtolCap = PetscMax(s->rtolMin, 1e-2 * s->rtolCap);
     eta = ew ? PetscMin(s->rtolCap, 0.9 * r * r) : s->rtolCap;
+    loose = eta;
     /* settled active set: the step feeds the next shift update, whose error it becomes */
     if (!st.activeChanged) eta = PetscMin(eta, SettledTolerance(s));
+    lazy = s->measuring && !st.activeChanged && s->rhoMeas[0] <= 0.0 ? PETSC_TRUE : PETSC_FALSE;
   }
   s->lastGap           = st.gapError;
   s->lastUpdate        = st.maxShiftChange > 0.0 ? PETSC_TRUE : PETSC_FALSE;
@@ -410,7 +449,10 @@ static PetscErrorCode LinearTolerance(SPSolver s, PetscInt it, PetscReal fnorm)
      in one step */
   if (s->innerTarget > 0.0 && fnorm > 0.0) eta = PetscMax(eta, PetscMin(s->rtolCap, 0.5 * s->innerTarget / fnorm));
   if (fnorm > 0.0) eta = PetscMin(0.5, PetscMax(eta, 0.01 * target / fnorm));
-  s->rtol  = PetscMax(s->rtolMin, eta);
+  s->rtol       = PetscMax(s->rtolMin, eta);
+  s->refineRtol = 0.0;
+  /* the tight rule before a measurement: solved loosely, refined if the shifts move (RefineStep) */
+  if (lazy && s->refine && loose > s->rtol) s->refineRtol = s->rtol, s->rtol = loose;
   s->lastF = fnorm;
   PetscCall(SNESGetKSP(s->snes, &ksp));
   PetscCall(KSPSetTolerances(ksp, s->rtol, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT));
@@ -545,6 +587,7 @@ PetscErrorCode SPSolverCreate(DM dm, SPProblem problem, SPContact contact, SPLog
   s->settledFactor = 1e-3;
   s->measured      = PETSC_TRUE;
   s->inexactInner  = PETSC_TRUE;
+  s->refine        = PETSC_TRUE;
   /* a load-controlled body touching at one point legitimately raises |F| at first */
   PetscCall(SNESSetDivergenceTolerance(s->snes, -1.0));
   PetscCall(SNESGetKSP(s->snes, &ksp));
@@ -627,6 +670,7 @@ PetscErrorCode SPSolverSetFromOptions(SPSolver s)
   PetscCall(PetscOptionsReal("-solver_inexact_rtol", "Inexact Newton: the loosest linear relative tolerance", "SPSolverSetFromOptions", s->rtolMax, &s->rtolMax, NULL));
   PetscCall(PetscOptionsReal("-solver_inexact_settled", "Inexact Newton: factor on the loosest linear tolerance for a step from an iterate whose active set did not change (the step then feeds a shift update), and for a solve's first step", "SPSolverSetFromOptions", s->settledFactor, &s->settledFactor, NULL));
   PetscCall(PetscOptionsBool("-solver_inexact_measured", "Inexact Newton, methods that update the shifts in Newton (shifted): once a shift update on a settled active set has measured the contraction rho of the gap error, steps that feed a shift update are solved to rho^2 (at most the loosest tolerance), and Eisenstat-Walker does not tighten a step after a shift update or an active-set change (false: the rule before, -solver_inexact_settled x the loosest)", "SPSolverSetFromOptions", s->measured, &s->measured, NULL));
+  PetscCall(PetscOptionsBool("-solver_inexact_refine", "Inexact Newton with the measured contraction (shifted): a step that needs the tight tolerance only because it may feed a shift update before the contraction is measured (a solve's first step, a settled step before the first measurement) is solved to the loosest tolerance and continued to the tight one only if the shifts then move (false: solved tight at once)", "SPSolverSetFromOptions", s->refine, &s->refine, NULL));
   PetscCall(PetscOptionsBool("-solver_inexact_inner", "Inexact Newton, methods that update the shifts after a converged solve (alm), frictionless: a solve counts as converged on a settled active set once |F| <= 0.1 rho |dF| (dF: the forces the next update adds, rho: the update's contraction), the last one (gap tolerance met) at the residual target; its steps are solved no tighter than that needs (false: every solve to the residual target)", "SPSolverSetFromOptions", s->inexactInner, &s->inexactInner, NULL));
   PetscCall(PetscOptionsInt("-solver_stall_its", "Stop a Newton solve after this many iterations without a 1% decrease of the residual or the gap error (0: never)", "SPSolverSetFromOptions", s->stallIts, &s->stallIts, NULL));
   PetscCall(PetscOptionsBool("-solver_fast_prealloc", "First-order mesh: preallocate the matrix from vertex adjacency and build the rigid-body modes from vertex coordinates (false: DMCreateMatrix, DMPlexCreateRigidBody)", "SPSolverSetFromOptions", prealloc, &prealloc, NULL));
@@ -711,6 +755,7 @@ PetscErrorCode SPSolverSolve(SPSolver s, Vec u, SNESConvergedReason *reason)
   s->stalled = PETSC_FALSE;
   PetscCall(SPProblemGetLoadFactor(s->problem, &load));
   s->resolve = s->lastConverged && load == s->lastLoad ? PETSC_TRUE : PETSC_FALSE; /* a re-solve after a shift update */
+  s->refineLinear = s->refineStep = 0;
   PetscCall(SNESSolve(s->snes, NULL, u));
   PetscCall(SNESGetConvergedReason(s->snes, reason));
   PetscCall(RecordSolveGap(s, *reason));
@@ -720,7 +765,7 @@ PetscErrorCode SPSolverSolve(SPSolver s, Vec u, SNESConvergedReason *reason)
   PetscCall(SNESGetLinearSolveIterations(s->snes, &lits));
   PetscCall(SNESGetNumberFunctionEvals(s->snes, &nf)); /* counted from 0 in every SNESSolve */
   s->newtonTotal += its;
-  s->linearTotal += lits;
+  s->linearTotal += lits + s->refineLinear;
   s->funcTotal += nf;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
