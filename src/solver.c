@@ -481,15 +481,15 @@ static PetscErrorCode RoundOffFloor(SPSolver s, PetscInt it, PetscReal fnorm, SN
 /* -solver_inexact_inner (methods that update the shifts after a converged solve: alm; frictionless,
    with the inexact Newton). The update that follows a solve leaves rho of the gap error, so the
    solve's own error need only be small against what that update adds: a residual r moves the gaps
-   by at most |r|/(eps A), so a re-solve ends, on a settled active set, once |F| <= 0.1 rho |dF|,
-   dF the nodal forces the next update would add and rho the contraction of the last update (this
-   iterate's gap error over the last solve's). An inexact multiplier method: the inner tolerance
-   falls with the constraint violation. A solve after which the gap tolerance holds is followed by
-   no update and goes to the residual target, and so does a load step's first solve: its update can
-   be exact (B1, rho ~ 0, where the estimate 1/(1 + alpha) cost 2 Newton iterations). Sets
-   s->innerTarget, the residual the step from this iterate should reach (0: the residual target
-   alone): at a re-solve's start rho times the above with the last two solves' rho (unmeasured in
-   a load step's first re-solve: 0, the tight rule). */
+   by at most |r|/(eps A), so a solve ends, on a settled active set, once |F| <= 0.1 rho |dF|, dF
+   the nodal forces the next update would add. An inexact multiplier method: the inner tolerance
+   falls with the constraint violation. rho: in a re-solve this iterate's gap error over the last
+   solve's (the last update's contraction), else the estimate 1/(1 + alpha). A solve after which
+   the gap tolerance holds is followed by no update and goes to the residual target. Where one
+   update is exact (B1, rho ~ 0) the estimate costs one more update (2 Newton iterations, the same
+   linear iterations). Sets s->innerTarget, the residual the step from this iterate should reach
+   (0: the residual target alone); at a re-solve's start, before the gaps move, rho times the
+   above. */
 static PetscErrorCode InnerConverged(SPSolver s, PetscInt it, PetscReal fnorm, SNESConvergedReason *reason)
 {
   SPContactStats st;
@@ -498,17 +498,15 @@ static PetscErrorCode InnerConverged(SPSolver s, PetscInt it, PetscReal fnorm, S
 
   PetscFunctionBeginUser;
   s->innerTarget = 0.0;
-  if (!s->inexact || !s->inexactInner || !s->resolve || s->solveGap[0] <= 0.0) PetscFunctionReturn(PETSC_SUCCESS);
+  if (!s->inexact || !s->inexactInner) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(SPContactGetUpdateForce(s->contact, &fnext));
+  if (fnext <= 0.0) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(SPContactGetIterationStats(s->contact, &st));
-  if (it == 0) {
-    rho            = s->solveGap[1] > 0.0 ? PetscMin(1.0, s->solveGap[0] / s->solveGap[1]) : 0.0;
-    s->innerTarget = 0.1 * rho * rho * fnext;
-    PetscFunctionReturn(PETSC_SUCCESS);
-  }
-  rho            = PetscMin(1.0, st.gapError / s->solveGap[0]);
-  s->innerTarget = 0.1 * rho * fnext;
-  if (s->innerTarget <= 0.0 || *reason != SNES_CONVERGED_ITERATING || fnorm > s->innerTarget) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(SPContactGetShiftContraction(s->contact, &rho));
+  if (s->resolve && it > 0) rho = PetscMin(1.0, st.gapError / s->solveGap[0]);
+  else if (s->solveGap[1] > 0.0) rho = PetscMin(1.0, s->solveGap[0] / s->solveGap[1]);
+  s->innerTarget = 0.1 * rho * fnext * (s->resolve && it == 0 ? rho : 1.0);
+  if (it == 0 || *reason != SNES_CONVERGED_ITERATING || fnorm > s->innerTarget) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(SPContactConverged(s->contact, &ok));
   if (!ok) PetscFunctionReturn(PETSC_SUCCESS);
   *reason = SNES_CONVERGED_FNORM_ABS;

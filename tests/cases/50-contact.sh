@@ -171,11 +171,13 @@ test_contact_inexact_measured() {
   return $rc
 }
 
-# alm's inexact inner solves (-solver_inexact_inner, default on): a re-solve ends at 0.1 rho x the
+# alm's inexact inner solves (-solver_inexact_inner, default on): a solve ends at 0.1 rho x the
 # forces of the next augmentation. B2 and B4 at 16^3 (the default iterative solver) at alpha 10 on
 # 1, 2 and 3 ranks against every solve to the residual target: the same augmentations, force and
-# peak pressure (1e-8), the gap tolerance met, no more Newton and fewer linear iterations; the same
-# Newton count and figures on 1, 2, 3 ranks. B1 (one exact augmentation, rho ~ 0): unchanged.
+# peak pressure (1e-8), the gap tolerance met, no more Newton and fewer linear iterations (1 rank:
+# B2 269 -> 139, B4 244 -> 95); the same Newton count and figures on 1, 2, 3 ranks. B1, where one
+# exact augmentation suffices (rho ~ 0, against the estimate 1/(1 + alpha)): one more augmentation,
+# at most 2 more Newton and 10 % more linear iterations (measured 3 -> 5, 63 -> 68), the exact figures.
 test_contact_inexact_inner() {
   local rc=0 case opts np
   for case in b2 b4; do
@@ -196,7 +198,12 @@ test_contact_inexact_inner() {
   done
   spc "$CASE_DIR/b1.txt" 1 -options_file input/block2d.opts -contact_method alm -output_dir "$CASE_DIR" -output_name b1 -output_fields false || return 1
   spc "$CASE_DIR/b1_off.txt" 1 -options_file input/block2d.opts -contact_method alm -solver_inexact_inner false -output_dir "$CASE_DIR" -output_name b1_off -output_fields false || return 1
-  same_summary "$CASE_DIR/b1_off.txt" "$CASE_DIR/b1.txt" 0 newton_iterations linear_iterations contact_augmentations || rc=1
+  local n0 l0; n0=$(sval "$CASE_DIR/b1_off.txt" newton_iterations); l0=$(sval "$CASE_DIR/b1_off.txt" linear_iterations)
+  assert_le b1_newton "$(sval "$CASE_DIR/b1.txt" newton_iterations)" $((n0 + 2)) || rc=1
+  assert_le b1_linear "$(sval "$CASE_DIR/b1.txt" linear_iterations)" "$(awk -v l="$l0" 'BEGIN{print 1.1 * l}')" || rc=1
+  assert_le b1_augmentations "$(sval "$CASE_DIR/b1.txt" contact_augmentations)" $(($(sval "$CASE_DIR/b1_off.txt" contact_augmentations) + 1)) || rc=1
+  assert_close b1_force "$(sval "$CASE_DIR/b1.txt" contact_force_y)" 0.01 1e-10 || rc=1
+  assert_le b1_gap_error "$(sval "$CASE_DIR/b1.txt" contact_gap_error)" "$(sval "$CASE_DIR/b1.txt" contact_gap_tol)" || rc=1
   return $rc
 }
 
