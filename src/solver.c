@@ -259,7 +259,7 @@ static PetscErrorCode FormJacobian(SNES snes, Vec X, Mat J, Mat P, void *ctx)
    looser step was all the next iterate needed. Its iterations count as linear iterations. */
 static PetscErrorCode RefineStep(SPSolver s, Vec X, Vec Y, Vec W, PetscBool *refined)
 {
-  PetscBool feeds;
+  PetscBool feeds, direct;
   KSP       ksp;
   Vec       F;
   PetscInt  lits;
@@ -267,9 +267,11 @@ static PetscErrorCode RefineStep(SPSolver s, Vec X, Vec Y, Vec W, PetscBool *ref
   PetscFunctionBeginUser;
   *refined = PETSC_FALSE;
   if (s->refineRtol <= 0.0 || s->refineRtol >= s->rtol) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(SNESGetKSP(s->snes, &ksp));
+  PetscCall(PetscObjectTypeCompare((PetscObject)ksp, KSPPREONLY, &direct));
+  if (direct) PetscFunctionReturn(PETSC_SUCCESS); /* a direct solve: the step is exact already */
   PetscCall(SPContactStepFeedsUpdate(s->contact, W, &feeds));
   if (!feeds) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCall(SNESGetKSP(s->snes, &ksp));
   PetscCall(SNESGetFunction(s->snes, &F, NULL, NULL)); /* F(X): the line search evaluates F(W) after this hook */
   PetscCall(KSPSetInitialGuessNonzero(ksp, PETSC_TRUE));
   /* with a nonzero initial guess PETSc's test is relative to the right-hand side, as the first solve's */
