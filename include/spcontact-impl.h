@@ -409,6 +409,7 @@ struct _n_SPSolver {
   PetscBool           refine;                /* -solver_inexact_refine */
   PetscReal           refineRtol;            /* the tolerance this step must reach if it feeds a shift update (0: none pending; RefineStep) */
   PetscInt            refineLinear, refineStep; /* linear iterations of refinements in this solve, and in the step not yet logged */
+  PetscInt            refinedSteps, refinedLinear; /* over the run: steps refined, their linear iterations (summary) */
   PetscBool           inexactInner;          /* -solver_inexact_inner (methods that update after a converged solve) */
   PetscReal           innerTarget, solveGap[2]; /* this iterate's inner-solve target (0: the residual target alone); gap error after the load step's last two converged solves (0: none) */
 };

@@ -280,6 +280,7 @@ static PetscErrorCode RefineStep(SPSolver s, Vec X, Vec Y, Vec W, PetscBool *ref
   PetscCall(KSPSetInitialGuessNonzero(ksp, PETSC_FALSE));
   PetscCall(KSPGetIterationNumber(ksp, &lits));
   s->refineLinear += lits, s->refineStep += lits;
+  s->refinedSteps++, s->refinedLinear += lits;
   PetscCall(VecWAXPY(W, -1.0, Y, X));
   PetscCall(PetscInfo(s->snes, "step refined to linear rtol %g for the shift update it feeds: %" PetscInt_FMT " more linear iterations\n", (double)s->refineRtol, lits));
   *refined = PETSC_TRUE;
@@ -833,6 +834,15 @@ PetscBool SPSolverReorthogonalises(SPSolver s)
 PetscBool SPSolverStalled(SPSolver s)
 {
   return s->stalled;
+}
+
+/* Steps refined by the lazy tight rule (RefineStep) and their linear iterations, over the run */
+PetscErrorCode SPSolverGetRefinements(SPSolver s, PetscInt *steps, PetscInt *linear)
+{
+  PetscFunctionBeginUser;
+  *steps  = s->refinedSteps;
+  *linear = s->refinedLinear;
+  PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 /* Newton iterations that kept the last assembled Jacobian and its preconditioner */
