@@ -296,8 +296,10 @@ static PetscErrorCode ShiftHook(SNESLineSearch ls, Vec X, Vec Y, Vec W, PetscBoo
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(s->log->shiftUpdate, 0, 0, 0, 0));
   PetscCall(SPContactLimitStep(s->contact, X, Y, W, &limited));
-  if (!limited) PetscCall(RefineStep(s, X, Y, W, &refined));
+  PetscCall(PetscLogEventEnd(s->log->shiftUpdate, 0, 0, 0, 0));
+  if (!limited) PetscCall(RefineStep(s, X, Y, W, &refined)); /* its KSPSolve logs as a linear solve */
   *changedY = refined;
+  PetscCall(PetscLogEventBegin(s->log->shiftUpdate, 0, 0, 0, 0));
   PetscCall(SPContactNewtonUpdate(s->contact, W, &shifted));
   *changedW = limited || shifted || refined ? PETSC_TRUE : PETSC_FALSE;
   PetscCall(PetscLogEventEnd(s->log->shiftUpdate, 0, 0, 0, 0));
