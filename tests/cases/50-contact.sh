@@ -146,27 +146,61 @@ test_contact_b1_one_update() {
   return $rc
 }
 
+# The solver options below are tested the same way: a case run with the option at its default and
+# with it set to false, on 1, 2 and 3 ranks. ab_runs NAME NP OPTION ARGS...: the two runs, into
+# $CASE_DIR/NAME_on_NP.txt and NAME_off_NP.txt.
+ab_runs() {
+  local name=$1 np=$2 opt=$3 v; shift 3
+  for v in on off; do
+    local off=(); [ $v = off ] && off=("$opt" false)
+    spc "$CASE_DIR/${name}_${v}_$np.txt" "$np" "$@" "${off[@]}" -output_dir "$CASE_DIR" -output_name "${name}_${v}_$np" -output_fields false || return 1
+  done
+}
+
+# ab_same NAME NP FORCE KEYS...: the option changes no figure: KEYS exactly, FORCE and the peak
+# pressure to 1e-8; the gap tolerance holds with it.
+ab_same() {
+  local name=$1 np=$2 force=$3 rc=0; shift 3
+  local on=$CASE_DIR/${name}_on_$np.txt off=$CASE_DIR/${name}_off_$np.txt
+  echo "-- $name on $np rank(s): option on against off"
+  same_summary "$off" "$on" 0 "$@" || rc=1
+  same_summary "$off" "$on" 1e-8 "$force" contact_peak_pressure || rc=1
+  assert_le "gap_error_${name}_np$np" "$(sval "$on" contact_gap_error)" "$(sval "$on" contact_gap_tol)" || rc=1
+  return $rc
+}
+
+# ab_fewer NAME NP KEY: the option on takes fewer KEY (linear_iterations) than off
+ab_fewer() {
+  assert_le "${3}_${1}_np${2}_fewer" "$(sval "$CASE_DIR/${1}_on_$2.txt" "$3")" $(($(sval "$CASE_DIR/${1}_off_$2.txt" "$3") - 1))
+}
+
+# ab_ranks NAME FORCE KEYS...: the option on gives the same figures on 2 and 3 ranks as on 1
+ab_ranks() {
+  local name=$1 force=$2 np rc=0; shift 2
+  for np in 2 3; do
+    same_summary "$CASE_DIR/${name}_on_1.txt" "$CASE_DIR/${name}_on_$np.txt" 0 "$@" || rc=1
+    same_summary "$CASE_DIR/${name}_on_1.txt" "$CASE_DIR/${name}_on_$np.txt" 1e-8 "$force" contact_peak_pressure || rc=1
+  done
+  return $rc
+}
+
+# B2 (input/hertz2d.opts) or B4 at 16^3 (input/indent3d.opts), the default iterative solver
+ab_case_opts() { if [ "$1" = b4 ]; then echo -options_file input/indent3d.opts -dm_plex_box_faces 16,16,16; else echo -options_file input/hertz2d.opts; fi; }
+ab_case_force() { if [ "$1" = b4 ]; then echo contact_force_z; else echo contact_force_y; fi; }
+
 # The measured contraction (-solver_inexact_measured, default on): steps that feed a shift update are
 # solved to rho^2 once rho is measured. B2 and B4 at 16^3 (the default iterative solver) on 1, 2 and
 # 3 ranks at alpha 10: the same Newton iterations and figures as the rule before, fewer linear
 # iterations (1 rank: B2 213 -> 172, B4 16^3 137 -> 92); the same Newton count and figures on 1, 2, 3
 test_contact_inexact_measured() {
-  local rc=0 case opts np
+  local rc=0 case np
   for case in b2 b4; do
-    opts="-options_file input/hertz2d.opts"; [ $case = b4 ] && opts="-options_file input/indent3d.opts -dm_plex_box_faces 16,16,16"
     for np in 1 2 3; do
-      spc "$CASE_DIR/${case}_on_$np.txt" $np $opts -contact_alpha 10 -output_dir "$CASE_DIR" -output_name "${case}_on_$np" -output_fields false || return 1
-      spc "$CASE_DIR/${case}_off_$np.txt" $np $opts -contact_alpha 10 -solver_inexact_measured false -output_dir "$CASE_DIR" -output_name "${case}_off_$np" -output_fields false || return 1
-      echo "-- $case on $np rank(s): measured rule against the rule before"
-      local on off force=contact_force_y; [ $case = b4 ] && force=contact_force_z
-      same_summary "$CASE_DIR/${case}_off_$np.txt" "$CASE_DIR/${case}_on_$np.txt" 0 newton_iterations contact_active_points || rc=1
-      same_summary "$CASE_DIR/${case}_off_$np.txt" "$CASE_DIR/${case}_on_$np.txt" 1e-8 $force contact_peak_pressure || rc=1
-      assert_le "gap_error_$case" "$(sval "$CASE_DIR/${case}_on_$np.txt" contact_gap_error)" "$(sval "$CASE_DIR/${case}_on_$np.txt" contact_gap_tol)" || rc=1
-      on=$(sval "$CASE_DIR/${case}_on_$np.txt" linear_iterations); off=$(sval "$CASE_DIR/${case}_off_$np.txt" linear_iterations)
-      assert_le "linear_iterations_${case}_np${np}_fewer" "$on" $((off - 1)) || rc=1
+      ab_runs $case $np -solver_inexact_measured $(ab_case_opts $case) -contact_alpha 10 || return 1
+      ab_same $case $np $(ab_case_force $case) newton_iterations contact_active_points || rc=1
+      ab_fewer $case $np linear_iterations || rc=1
     done
-    for np in 2 3; do same_summary "$CASE_DIR/${case}_on_1.txt" "$CASE_DIR/${case}_on_$np.txt" 0 newton_iterations || rc=1; done
-    for np in 2 3; do same_summary "$CASE_DIR/${case}_on_1.txt" "$CASE_DIR/${case}_on_$np.txt" 1e-8 $force contact_peak_pressure || rc=1; done
+    ab_ranks $case $(ab_case_force $case) newton_iterations || rc=1
   done
   return $rc
 }
@@ -178,22 +212,16 @@ test_contact_inexact_measured() {
 # pressure (1e-8), the gap tolerance met, fewer linear iterations (measured 92 -> 81 on 1 rank,
 # the refinements counted); B1, whose first step feeds an exact update: the same Newton count.
 test_contact_inexact_refine() {
-  local rc=0 np on off
+  local rc=0 np
   for np in 1 2 3; do
-    spc "$CASE_DIR/on_$np.txt" $np -options_file input/indent3d.opts -dm_plex_box_faces 16,16,16 -contact_alpha 10 -output_dir "$CASE_DIR" -output_name "on_$np" -output_fields false || return 1
-    spc "$CASE_DIR/off_$np.txt" $np -options_file input/indent3d.opts -dm_plex_box_faces 16,16,16 -contact_alpha 10 -solver_inexact_refine false -output_dir "$CASE_DIR" -output_name "off_$np" -output_fields false || return 1
-    echo "-- $np rank(s): lazy tight rule against the tight rule"
-    same_summary "$CASE_DIR/off_$np.txt" "$CASE_DIR/on_$np.txt" 0 newton_iterations contact_active_points || rc=1
-    same_summary "$CASE_DIR/off_$np.txt" "$CASE_DIR/on_$np.txt" 1e-8 contact_force_z contact_peak_pressure || rc=1
-    assert_le "gap_error_np$np" "$(sval "$CASE_DIR/on_$np.txt" contact_gap_error)" "$(sval "$CASE_DIR/on_$np.txt" contact_gap_tol)" || rc=1
-    on=$(sval "$CASE_DIR/on_$np.txt" linear_iterations); off=$(sval "$CASE_DIR/off_$np.txt" linear_iterations)
-    assert_le "linear_iterations_np${np}_fewer" "$on" $((off - 1)) || rc=1
+    ab_runs b4 $np -solver_inexact_refine $(ab_case_opts b4) -contact_alpha 10 || return 1
+    ab_same b4 $np contact_force_z newton_iterations contact_active_points || rc=1
+    ab_fewer b4 $np linear_iterations || rc=1
   done
-  for np in 2 3; do same_summary "$CASE_DIR/on_1.txt" "$CASE_DIR/on_$np.txt" 1e-8 contact_force_z contact_peak_pressure || rc=1; done
-  spc "$CASE_DIR/b1.txt" 1 -options_file input/block2d.opts -output_dir "$CASE_DIR" -output_name b1 -output_fields false || return 1
-  spc "$CASE_DIR/b1_off.txt" 1 -options_file input/block2d.opts -solver_inexact_refine false -output_dir "$CASE_DIR" -output_name b1_off -output_fields false || return 1
-  same_summary "$CASE_DIR/b1_off.txt" "$CASE_DIR/b1.txt" 0 newton_iterations || rc=1
-  same_summary "$CASE_DIR/b1_off.txt" "$CASE_DIR/b1.txt" 1e-10 contact_force_y || rc=1
+  ab_ranks b4 contact_force_z || rc=1
+  ab_runs b1 1 -solver_inexact_refine -options_file input/block2d.opts || return 1
+  same_summary "$CASE_DIR/b1_off_1.txt" "$CASE_DIR/b1_on_1.txt" 0 newton_iterations || rc=1
+  same_summary "$CASE_DIR/b1_off_1.txt" "$CASE_DIR/b1_on_1.txt" 1e-10 contact_force_y || rc=1
   return $rc
 }
 
@@ -205,31 +233,23 @@ test_contact_inexact_refine() {
 # exact augmentation suffices (rho ~ 0, against the estimate 1/(1 + alpha)): one more augmentation,
 # at most 2 more Newton and 10 % more linear iterations (measured 3 -> 5, 63 -> 68), the exact figures.
 test_contact_inexact_inner() {
-  local rc=0 case opts np
+  local rc=0 case np
   for case in b2 b4; do
-    opts="-options_file input/hertz2d.opts"; [ $case = b4 ] && opts="-options_file input/indent3d.opts -dm_plex_box_faces 16,16,16"
     for np in 1 2 3; do
-      spc "$CASE_DIR/${case}_on_$np.txt" $np $opts -contact_method alm -contact_alpha 10 -output_dir "$CASE_DIR" -output_name "${case}_on_$np" -output_fields false || return 1
-      spc "$CASE_DIR/${case}_off_$np.txt" $np $opts -contact_method alm -contact_alpha 10 -solver_inexact_inner false -output_dir "$CASE_DIR" -output_name "${case}_off_$np" -output_fields false || return 1
-      echo "-- $case alm on $np rank(s): inexact inner solves against solves to the residual target"
-      local force=contact_force_y; [ $case = b4 ] && force=contact_force_z
-      same_summary "$CASE_DIR/${case}_off_$np.txt" "$CASE_DIR/${case}_on_$np.txt" 0 contact_augmentations contact_active_points || rc=1
-      same_summary "$CASE_DIR/${case}_off_$np.txt" "$CASE_DIR/${case}_on_$np.txt" 1e-8 $force contact_peak_pressure || rc=1
-      assert_le "gap_error_$case" "$(sval "$CASE_DIR/${case}_on_$np.txt" contact_gap_error)" "$(sval "$CASE_DIR/${case}_on_$np.txt" contact_gap_tol)" || rc=1
+      ab_runs $case $np -solver_inexact_inner $(ab_case_opts $case) -contact_method alm -contact_alpha 10 || return 1
+      ab_same $case $np $(ab_case_force $case) contact_augmentations contact_active_points || rc=1
       assert_le "newton_${case}_np${np}" "$(sval "$CASE_DIR/${case}_on_$np.txt" newton_iterations)" "$(sval "$CASE_DIR/${case}_off_$np.txt" newton_iterations)" || rc=1
-      assert_le "linear_${case}_np${np}_fewer" "$(sval "$CASE_DIR/${case}_on_$np.txt" linear_iterations)" $(($(sval "$CASE_DIR/${case}_off_$np.txt" linear_iterations) - 1)) || rc=1
+      ab_fewer $case $np linear_iterations || rc=1
     done
-    for np in 2 3; do same_summary "$CASE_DIR/${case}_on_1.txt" "$CASE_DIR/${case}_on_$np.txt" 0 newton_iterations contact_augmentations || rc=1; done
-    for np in 2 3; do same_summary "$CASE_DIR/${case}_on_1.txt" "$CASE_DIR/${case}_on_$np.txt" 1e-8 $force contact_peak_pressure || rc=1; done
+    ab_ranks $case $(ab_case_force $case) newton_iterations contact_augmentations || rc=1
   done
-  spc "$CASE_DIR/b1.txt" 1 -options_file input/block2d.opts -contact_method alm -output_dir "$CASE_DIR" -output_name b1 -output_fields false || return 1
-  spc "$CASE_DIR/b1_off.txt" 1 -options_file input/block2d.opts -contact_method alm -solver_inexact_inner false -output_dir "$CASE_DIR" -output_name b1_off -output_fields false || return 1
-  local n0 l0; n0=$(sval "$CASE_DIR/b1_off.txt" newton_iterations); l0=$(sval "$CASE_DIR/b1_off.txt" linear_iterations)
-  assert_le b1_newton "$(sval "$CASE_DIR/b1.txt" newton_iterations)" $((n0 + 2)) || rc=1
-  assert_le b1_linear "$(sval "$CASE_DIR/b1.txt" linear_iterations)" "$(awk -v l="$l0" 'BEGIN{print 1.1 * l}')" || rc=1
-  assert_le b1_augmentations "$(sval "$CASE_DIR/b1.txt" contact_augmentations)" $(($(sval "$CASE_DIR/b1_off.txt" contact_augmentations) + 1)) || rc=1
-  assert_close b1_force "$(sval "$CASE_DIR/b1.txt" contact_force_y)" 0.01 1e-10 || rc=1
-  assert_le b1_gap_error "$(sval "$CASE_DIR/b1.txt" contact_gap_error)" "$(sval "$CASE_DIR/b1.txt" contact_gap_tol)" || rc=1
+  ab_runs b1 1 -solver_inexact_inner -options_file input/block2d.opts -contact_method alm || return 1
+  local on=$CASE_DIR/b1_on_1.txt n0 l0; n0=$(sval "$CASE_DIR/b1_off_1.txt" newton_iterations); l0=$(sval "$CASE_DIR/b1_off_1.txt" linear_iterations)
+  assert_le b1_newton "$(sval "$on" newton_iterations)" $((n0 + 2)) || rc=1
+  assert_le b1_linear "$(sval "$on" linear_iterations)" "$(awk -v l="$l0" 'BEGIN{print 1.1 * l}')" || rc=1
+  assert_le b1_augmentations "$(sval "$on" contact_augmentations)" $(($(sval "$CASE_DIR/b1_off_1.txt" contact_augmentations) + 1)) || rc=1
+  assert_close b1_force "$(sval "$on" contact_force_y)" 0.01 1e-10 || rc=1
+  assert_le b1_gap_error "$(sval "$on" contact_gap_error)" "$(sval "$on" contact_gap_tol)" || rc=1
   return $rc
 }
 
