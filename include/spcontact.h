@@ -89,6 +89,7 @@ PETSC_EXTERN PetscErrorCode SPContactGetIterationStats(SPContact, SPContactStats
 PETSC_EXTERN PetscErrorCode SPContactHasFriction(SPContact, PetscBool *);
 PETSC_EXTERN PetscErrorCode SPContactHasPairs(SPContact, PetscBool *);
 PETSC_EXTERN PetscErrorCode SPContactShiftsInNewton(SPContact, PetscBool *);
+PETSC_EXTERN PetscErrorCode SPContactUpdatesShifts(SPContact, PetscBool *);
 PETSC_EXTERN PetscErrorCode SPContactGetActiveVersion(SPContact, PetscInt *);
 PETSC_EXTERN PetscErrorCode SPContactGetShiftContraction(SPContact, PetscReal *);
 PETSC_EXTERN PetscErrorCode SPContactGetUpdateForce(SPContact, PetscReal *);

@@ -550,6 +550,14 @@ PetscErrorCode SPContactShiftsInNewton(SPContact c, PetscBool *on)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Whether the method updates the shifts at all (shifted, alm; not penalty) */
+PetscErrorCode SPContactUpdatesShifts(SPContact c, PetscBool *on)
+{
+  PetscFunctionBeginUser;
+  *on = c && c->enabled && c->method->timing != SP_UPDATE_NONE ? PETSC_TRUE : PETSC_FALSE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode SPContactHasFriction(SPContact c, PetscBool *on)
 {
   PetscFunctionBeginUser;
