@@ -400,6 +400,7 @@ struct _n_SPSolver {
   PetscInt            jacReuseMax, jacReused, jacVersion, jacReuses; /* Jacobian reuse on an unchanged active set */
   PetscBool           jacValid;
   PetscBool           inexact;              /* linear tolerance from the Newton iteration's progress */
+  PetscBool           targetFloor;          /* -solver_target_floor: without the inexact Newton, no solve past 1% of the residual target */
   PetscReal           rtolMax, rtolMin, rtol, rtolCap, lastF; /* its range (rtolMin: -ksp_rtol), value, safeguard cap, previous |F| */
   PetscBool           resolve, lastConverged; /* this solve repeats a converged one at the same load (after a shift update) */
   PetscReal           lastLoad, settledFactor;
