@@ -146,44 +146,6 @@ test_contact_b1_one_update() {
   return $rc
 }
 
-# The solver options below are tested the same way: a case run with the option at its default and
-# with it set to false, on 1, 2 and 3 ranks. ab_runs NAME NP OPTION ARGS...: the two runs, into
-# $CASE_DIR/NAME_on_NP.txt and NAME_off_NP.txt.
-ab_runs() {
-  local name=$1 np=$2 opt=$3 v; shift 3
-  for v in on off; do
-    local off=(); [ $v = off ] && off=("$opt" false)
-    spc "$CASE_DIR/${name}_${v}_$np.txt" "$np" "$@" "${off[@]}" -output_dir "$CASE_DIR" -output_name "${name}_${v}_$np" -output_fields false || return 1
-  done
-}
-
-# ab_same NAME NP FORCE KEYS...: the option changes no figure: KEYS exactly, FORCE and the peak
-# pressure to 1e-8; the gap tolerance holds with it.
-ab_same() {
-  local name=$1 np=$2 force=$3 rc=0; shift 3
-  local on=$CASE_DIR/${name}_on_$np.txt off=$CASE_DIR/${name}_off_$np.txt
-  echo "-- $name on $np rank(s): option on against off"
-  same_summary "$off" "$on" 0 "$@" || rc=1
-  same_summary "$off" "$on" 1e-8 "$force" contact_peak_pressure || rc=1
-  assert_le "gap_error_${name}_np$np" "$(sval "$on" contact_gap_error)" "$(sval "$on" contact_gap_tol)" || rc=1
-  return $rc
-}
-
-# ab_fewer NAME NP KEY: the option on takes fewer KEY (linear_iterations) than off
-ab_fewer() {
-  assert_le "${3}_${1}_np${2}_fewer" "$(sval "$CASE_DIR/${1}_on_$2.txt" "$3")" $(($(sval "$CASE_DIR/${1}_off_$2.txt" "$3") - 1))
-}
-
-# ab_ranks NAME FORCE KEYS...: the option on gives the same figures on 2 and 3 ranks as on 1
-ab_ranks() {
-  local name=$1 force=$2 np rc=0; shift 2
-  for np in 2 3; do
-    same_summary "$CASE_DIR/${name}_on_1.txt" "$CASE_DIR/${name}_on_$np.txt" 0 "$@" || rc=1
-    same_summary "$CASE_DIR/${name}_on_1.txt" "$CASE_DIR/${name}_on_$np.txt" 1e-8 "$force" contact_peak_pressure || rc=1
-  done
-  return $rc
-}
-
 # B2 (input/hertz2d.opts) or B4 at 16^3 (input/indent3d.opts), the default iterative solver
 ab_case_opts() { if [ "$1" = b4 ]; then echo -options_file input/indent3d.opts -dm_plex_box_faces 16,16,16; else echo -options_file input/hertz2d.opts; fi; }
 ab_case_force() { if [ "$1" = b4 ]; then echo contact_force_z; else echo contact_force_y; fi; }
