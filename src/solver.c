@@ -397,6 +397,38 @@ static PetscReal SettledTolerance(SPSolver s)
   return PetscMax(tight, PetscMin(s->rtolCap, rho * rho));
 }
 
+/* The Newton residual target: -snes_atol if given, else -solver_atol_rel x the run's largest initial
+   residual */
+static PetscErrorCode ResidualTarget(SPSolver s, PetscReal *target)
+{
+  PetscReal atol;
+
+  PetscFunctionBeginUser;
+  PetscCall(SNESGetTolerances(s->snes, &atol, NULL, NULL, NULL, NULL));
+  *target = s->userAtol ? atol : s->atolRel * s->fscale;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* -solver_target_floor (default where every solve goes to -ksp_rtol: friction, finite strain): a
+   step need not reduce |F| further than to 1% of the Newton residual target; what a tighter solve
+   adds lies below what the next residual evaluation and every convergence test can see. eta =
+   max(-ksp_rtol, min(-solver_inexact_rtol, 0.01 target/|F|)): -ksp_rtol while |F| is large, looser
+   only near the target. F2 (shifted, alpha 10): 5363 -> 3982 GMRES iterations, the same 109 Newton
+   iterations, stick zone and force (README "Solver strategy"). */
+static PetscErrorCode TargetFloor(SPSolver s, PetscReal fnorm)
+{
+  PetscReal target;
+  KSP       ksp;
+
+  PetscFunctionBeginUser;
+  if (!s->targetFloor || fnorm <= 0.0) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(ResidualTarget(s, &target));
+  s->rtol = PetscMax(s->rtolMin, PetscMin(s->rtolMax, 0.01 * target / fnorm));
+  PetscCall(SNESGetKSP(s->snes, &ksp));
+  PetscCall(KSPSetTolerances(ksp, s->rtol, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* Inexact Newton: a linear solve is loose only where its error is thrown away. A step from an
    iterate whose active set just changed is a search step: the next iterate's active set decides
    the following step, and eta = etaMax, with etaMax = min(-solver_inexact_rtol, 0.1/(1 + alpha))
@@ -404,8 +436,8 @@ static PetscReal SettledTolerance(SPSolver s)
    iterations). With penalty a solve's first step is a search step too; with shifted and alm it
    may feed an update (shifted: the lazy rule below; alm: a one-step solve, B1, whose first step
    loose cost +2 Newton iterations). Every other step (from a settled active set) feeds a shift
-   update, and the update inherits the step's error (on B1,
-   where one exact update suffices, etaMax there cost +3): eta = -solver_inexact_settled x etaMax.
+   update, and the update inherits the step's error (on B1, where one exact update suffices,
+   etaMax there cost +3): eta = -solver_inexact_settled x etaMax.
    Eisenstat-Walker's second choice 0.9 (|F_k|/|F_k-1|)^2 tightens a fast-contracting iteration,
    but not a search step: there the ratio measures the active set's change, not Newton's
    convergence (penalty on B4 at 1e6 dofs solved its second step to 1.4e-5 because the first had
@@ -419,32 +451,11 @@ static PetscReal SettledTolerance(SPSolver s)
    steps that feed a shift update take SettledTolerance, and Eisenstat-Walker does not tighten a
    step after a shift update (the update raised |F| on purpose: the ratio measures the update,
    not Newton) nor a search step. */
-/* -solver_target_floor (default where every solve goes to -ksp_rtol: friction, finite strain): a
-   step need not reduce |F| further than to 1% of the Newton residual target; what a tighter solve
-   adds lies below what the next residual evaluation and every convergence test can see. eta =
-   max(-ksp_rtol, min(-solver_inexact_rtol, 0.01 target/|F|)): -ksp_rtol while |F| is large, looser
-   only near the target. F2 (shifted, alpha 10): 5363 -> 3982 GMRES iterations, the same 109 Newton
-   iterations, stick zone and force (README "Solver strategy"). */
-static PetscErrorCode TargetFloor(SPSolver s, PetscReal fnorm)
-{
-  PetscReal atol, target;
-  KSP       ksp;
-
-  PetscFunctionBeginUser;
-  if (!s->targetFloor || fnorm <= 0.0) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCall(SNESGetTolerances(s->snes, &atol, NULL, NULL, NULL, NULL));
-  target  = s->userAtol ? atol : s->atolRel * s->fscale;
-  s->rtol = PetscMax(s->rtolMin, PetscMin(s->rtolMax, 0.01 * target / fnorm));
-  PetscCall(SNESGetKSP(s->snes, &ksp));
-  PetscCall(KSPSetTolerances(ksp, s->rtol, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 static PetscErrorCode LinearTolerance(SPSolver s, PetscInt it, PetscReal fnorm)
 {
   SPContactStats st = {0};
   PetscBool      on;
-  PetscReal      eta, target, atol, loose;
+  PetscReal      eta, target, loose;
   PetscBool      lazy = PETSC_FALSE;
   KSP            ksp;
 
@@ -455,8 +466,7 @@ static PetscErrorCode LinearTolerance(SPSolver s, PetscInt it, PetscReal fnorm)
   }
   PetscCall(SPContactIsActive(s->contact, &on));
   if (on) PetscCall(SPContactGetIterationStats(s->contact, &st));
-  PetscCall(SNESGetTolerances(s->snes, &atol, NULL, NULL, NULL, NULL));
-  target = s->userAtol ? atol : s->atolRel * s->fscale;
+  PetscCall(ResidualTarget(s, &target));
   if (it == 0) {
     PetscReal rho;
     PetscBool inNewton, updates;
@@ -707,7 +717,7 @@ PetscErrorCode SPSolverSetFromOptions(SPSolver s)
   PetscCall(PetscOptionsBool("-solver_inexact", "Inexact Newton: search steps to -solver_inexact_rtol, steps that feed a shift update tighter (README Performance); default true for a linear material without friction (false: every solve to -ksp_rtol)", "SPSolverSetFromOptions", s->inexact, &s->inexact, NULL));
   PetscCall(PetscOptionsBool("-solver_target_floor", "Without the inexact Newton (the default with friction or a nonlinear material): no linear solve reduces the residual further than to 1% of the Newton residual target, at most -solver_inexact_rtol, at least -ksp_rtol (false: every solve to -ksp_rtol)", "SPSolverSetFromOptions", s->targetFloor, &s->targetFloor, NULL));
   PetscCall(PetscOptionsReal("-solver_inexact_rtol", "Inexact Newton: the loosest linear relative tolerance", "SPSolverSetFromOptions", s->rtolMax, &s->rtolMax, NULL));
-  PetscCall(PetscOptionsReal("-solver_inexact_settled", "Inexact Newton: factor on the loosest linear tolerance for a step from an iterate whose active set did not change (the step then feeds a shift update), and for a solve's first step", "SPSolverSetFromOptions", s->settledFactor, &s->settledFactor, NULL));
+  PetscCall(PetscOptionsReal("-solver_inexact_settled", "Inexact Newton: factor on the loosest linear tolerance for a step from an iterate whose active set did not change (the step then feeds a shift update), and for a solve's first step with a method that updates the shifts (shifted, alm; with penalty it is a search step)", "SPSolverSetFromOptions", s->settledFactor, &s->settledFactor, NULL));
   PetscCall(PetscOptionsBool("-solver_inexact_measured", "Inexact Newton, methods that update the shifts in Newton (shifted): once a shift update on a settled active set has measured the contraction rho of the gap error, steps that feed a shift update are solved to rho^2 (at most the loosest tolerance), and Eisenstat-Walker does not tighten a step after a shift update or an active-set change (false: the rule before, -solver_inexact_settled x the loosest)", "SPSolverSetFromOptions", s->measured, &s->measured, NULL));
   PetscCall(PetscOptionsBool("-solver_inexact_refine", "Inexact Newton with the measured contraction (shifted): a step that needs the tight tolerance only because it may feed a shift update before the contraction is measured (a solve's first step, a settled step before the first measurement) is solved to the loosest tolerance and continued to the tight one only if the shifts then move (false: solved tight at once)", "SPSolverSetFromOptions", s->refine, &s->refine, NULL));
   PetscCall(PetscOptionsBool("-solver_inexact_inner", "Inexact Newton, methods that update the shifts after a converged solve (alm), frictionless: a solve counts as converged on a settled active set once |F| <= 0.1 rho |dF| (dF: the forces the next update adds, rho: the update's contraction), the last one (gap tolerance met) at the residual target; its steps are solved no tighter than that needs (false: every solve to the residual target)", "SPSolverSetFromOptions", s->inexactInner, &s->inexactInner, NULL));
