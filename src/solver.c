@@ -536,9 +536,9 @@ static PetscErrorCode RoundOffFloor(SPSolver s, PetscInt it, PetscReal fnorm, SN
    solve's (the last update's contraction), else the estimate 1/(1 + alpha). A solve after which
    the gap tolerance holds is followed by no update and goes to the residual target. Where one
    update is exact (B1, rho ~ 0) the estimate costs one more update (2 Newton iterations; linear
-   iterations 63 -> 68 in 2D, 76 -> 69 in 3D). Sets s->innerTarget, the residual the step from this iterate should reach
-   (0: the residual target alone); at a re-solve's start, before the gaps move, rho times the
-   above. */
+   iterations 63 -> 68 in 2D, 76 -> 69 in 3D). Sets s->innerTarget, the residual the step from
+   this iterate should reach (0: the residual target alone); at a re-solve's start, before the
+   gaps move, rho times the above. */
 static PetscErrorCode InnerConverged(SPSolver s, PetscInt it, PetscReal fnorm, SNESConvergedReason *reason)
 {
   SPContactStats st;
