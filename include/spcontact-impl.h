@@ -397,6 +397,8 @@ struct _n_SPSolver {
   PetscReal           prevF;     /* |F| at the previous convergence test of this solve (the round-off floor test) */
   PetscBool           stalled;
   PetscBool           reorthogonalise; /* GMRES re-orthogonalises every Arnoldi vector (after a breakdown) */
+  PetscReal           acceptRtol; /* -solver_linear_accept: a solve stopped short with |b - A x| <= this x |b| counts as converged (solver-accept.c) */
+  PetscInt            accepted;   /* such solves over the run */
   PetscInt            jacReuseMax, jacReused, jacVersion, jacReuses; /* Jacobian reuse on an unchanged active set */
   PetscBool           jacValid;
   PetscBool           inexact;              /* linear tolerance from the Newton iteration's progress */
@@ -414,6 +416,8 @@ struct _n_SPSolver {
   PetscBool           inexactInner;          /* -solver_inexact_inner (methods that update after a converged solve) */
   PetscReal           innerTarget, solveGap[2]; /* this iterate's inner-solve target (0: the residual target alone); gap error after the load step's last two converged solves (0: none) */
 };
+
+PETSC_EXTERN PetscErrorCode SPSolverSetUpAccept(SPSolver);
 
 struct _n_SPOutput {
   DM          dm;  /* not owned */

@@ -127,6 +127,7 @@ PETSC_EXTERN PetscErrorCode SPSolverSetHistory(SPSolver, FILE *, PetscInt);
 PETSC_EXTERN PetscErrorCode SPSolverGetCounts(SPSolver, PetscInt *, PetscInt *, PetscInt *);
 PETSC_EXTERN PetscErrorCode SPSolverGetJacobianReuses(SPSolver, PetscInt *);
 PETSC_EXTERN PetscErrorCode SPSolverGetRefinements(SPSolver, PetscInt *, PetscInt *);
+PETSC_EXTERN PetscErrorCode SPSolverGetAccepted(SPSolver, PetscInt *);
 PETSC_EXTERN PetscErrorCode SPSolverRecoverBreakdown(SPSolver, PetscBool *);
 PETSC_EXTERN PetscErrorCode SPSolverReorthogonalise(SPSolver);
 PETSC_EXTERN PetscBool      SPSolverReorthogonalises(SPSolver);

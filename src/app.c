@@ -161,7 +161,7 @@ static PetscReal PeakMemoryMiB(void)
 PetscErrorCode SPAppSummary(SPApp a)
 {
   PetscViewer    v = PETSC_VIEWER_STDOUT_(a->comm);
-  PetscInt       newton, linear, functions, reuses, refined, refinedLinear;
+  PetscInt       newton, linear, functions, reuses, refined, refinedLinear, accepted;
   PetscReal      umax, err;
   PetscBool      hasErr, on;
   PetscLogDouble t1;
@@ -182,6 +182,8 @@ PetscErrorCode SPAppSummary(SPApp a)
   PetscCall(PetscViewerASCIIPrintf(v, "jacobian_reuses %" PetscInt_FMT "\n", reuses));
   PetscCall(SPSolverGetRefinements(a->solver, &refined, &refinedLinear));
   PetscCall(PetscViewerASCIIPrintf(v, "refined_steps %" PetscInt_FMT "\nrefinement_linear_iterations %" PetscInt_FMT "\n", refined, refinedLinear));
+  PetscCall(SPSolverGetAccepted(a->solver, &accepted));
+  PetscCall(PetscViewerASCIIPrintf(v, "linear_solves_accepted %" PetscInt_FMT "\n", accepted));
   PetscCall(PetscViewerASCIIPrintf(v, "krylov_reorthogonalised %s\n", SPSolverReorthogonalises(a->solver) ? "yes" : "no"));
   PetscCall(SPSolverGetBulkOperator(a->solver, &bulk));
   PetscCall(PetscViewerASCIIPrintf(v, "bulk_operator %s\n", bulk));

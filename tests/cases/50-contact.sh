@@ -212,6 +212,34 @@ test_contact_inexact_penalty_search() {
   return $rc
 }
 
+# A linear solve stopped short of its tolerance (-solver_linear_accept): B2 with CG capped at 12
+# iterations per solve (about 20 to 37 reach each step's tolerance). With -solver_linear_accept
+# 0.05 the steps whose true residual fell 20x are inexact Newton steps: the same 9 Newton
+# iterations as the default run, the force and peak pressure of the default run, on 1, 2 and 3
+# ranks. With 0 (the check off) every such solve fails the Newton solve: DIVERGED_LINEAR_SOLVE,
+# the cut-back budget, exit 2, no result passed off as converged.
+test_contact_linear_accept() {
+  local rc=0 ref=$CASE_DIR/ref.txt np out
+  spc "$ref" 1 -options_file input/hertz2d.opts -output_dir "$CASE_DIR" -output_name ref || return 1
+  assert_eq accepted_default "$(sval "$ref" linear_solves_accepted)" 0 || rc=1
+  for np in 1 2 3; do
+    out=$CASE_DIR/short_$np.txt
+    spc "$out" "$np" -options_file input/hertz2d.opts -ksp_max_it 12 -solver_linear_accept 0.05 -output_dir "$CASE_DIR" -output_name "short$np" || return 1
+    echo "ranks $np: newton $(sval "$out" newton_iterations) linear $(sval "$out" linear_iterations) accepted $(sval "$out" linear_solves_accepted)"
+    assert_eq "converged_np$np" "$(sval "$out" converged)" yes || rc=1
+    assert_ge "accepted_np$np" "$(sval "$out" linear_solves_accepted)" 1 || rc=1
+    same_summary "$ref" "$out" 0 newton_iterations || rc=1
+    same_summary "$ref" "$out" 1e-8 contact_force_y contact_peak_pressure || rc=1
+    assert_le "penetration_np$np" "$(sval "$out" contact_max_penetration)" "$(sval "$out" contact_gap_tol)" || rc=1
+  done
+  out=$CASE_DIR/off.txt
+  spc "$out" 1 -options_file input/hertz2d.opts -ksp_max_it 12 -solver_linear_accept 0 -load_max_cutbacks 1 -output_dir "$CASE_DIR" -output_name off
+  assert_eq exit_off $? 2 || rc=1
+  assert_eq converged_off "$(sval "$out" converged)" no || rc=1
+  grep -q '^load step 1 (load factor 1.): solve did not converge (DIVERGED_LINEAR_SOLVE)' "$out" || { echo "no DIVERGED_LINEAR_SOLVE line FAILED"; rc=1; }
+  return $rc
+}
+
 # alm's inexact inner solves (-solver_inexact_inner, default on): a solve ends at 0.1 rho x the
 # forces of the next augmentation. B2 and B4 at 16^3 (the default iterative solver) at alpha 10 on
 # 1, 2 and 3 ranks against every solve to the residual target: the same augmentations, force and

@@ -77,6 +77,8 @@ stall iterations negative|input/hertz2d.opts|-solver_stall_its -1
 Jacobian reuse negative|input/hertz2d.opts|-solver_jacobian_reuse -1
 inexact tolerance above 1|input/hertz2d.opts|-solver_inexact_rtol 2
 inexact settled factor zero|input/hertz2d.opts|-solver_inexact_settled 0
+linear accept tolerance 1|input/hertz2d.opts|-solver_linear_accept 1
+linear accept tolerance negative|input/hertz2d.opts|-solver_linear_accept -1e-3
 restart file missing|input/hertz2d.opts|-restart /nonexistent.h5
 pair master value missing|input/hertz2d_twobody.opts|-contact_pair_0_master_values 42
 pair slave equals master|input/hertz2d_twobody.opts|-contact_pair_0_master_values 3 -contact_pair_0_slave_values 3
