@@ -517,13 +517,15 @@ static PetscErrorCode LinearTolerance(SPSolver s, PetscInt it, PetscReal fnorm)
 static PetscErrorCode RoundOffFloor(SPSolver s, PetscInt it, PetscReal fnorm, SNESConvergedReason *reason)
 {
   SPContactStats st = {0};
+  PetscReal      target;
 
   PetscFunctionBeginUser;
-  if (it == 0 || s->userAtol || fnorm > 10.0 * s->atolRel * s->fscale || fnorm < 0.5 * s->prevF) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(ResidualTarget(s, &target));
+  if (it == 0 || s->userAtol || fnorm > 10.0 * target || fnorm < 0.5 * s->prevF) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(SPContactGetIterationStats(s->contact, &st));
   if (st.maxShiftChange > 0.0) PetscFunctionReturn(PETSC_SUCCESS);
   *reason = SNES_CONVERGED_FNORM_ABS;
-  PetscCall(PetscInfo(s->snes, "residual %g at its round-off floor (target %g): the residual test passes\n", (double)fnorm, (double)(s->atolRel * s->fscale)));
+  PetscCall(PetscInfo(s->snes, "residual %g at its round-off floor (target %g): the residual test passes\n", (double)fnorm, (double)target));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -583,12 +585,14 @@ static PetscErrorCode Converged(SNES snes, PetscInt it, PetscReal xnorm, PetscRe
 {
   SPSolver  s = (SPSolver)ctx;
   PetscBool on, ok;
+  PetscReal target;
 
   PetscFunctionBeginUser;
   if (it == 0) s->fscale = PetscMax(s->fscale, fnorm);
   PetscCall(SNESConvergedDefault(snes, it, xnorm, snorm, fnorm, reason, NULL));
+  PetscCall(ResidualTarget(s, &target));
   /* before the short-step test, which SNESConvergedDefault checks after its own atol */
-  if (!s->userAtol && (*reason == SNES_CONVERGED_ITERATING || *reason == SNES_CONVERGED_SNORM_RELATIVE) && fnorm <= s->atolRel * s->fscale) *reason = SNES_CONVERGED_FNORM_ABS;
+  if (!s->userAtol && (*reason == SNES_CONVERGED_ITERATING || *reason == SNES_CONVERGED_SNORM_RELATIVE) && fnorm <= target) *reason = SNES_CONVERGED_FNORM_ABS;
   /* A re-solve after an augmentation takes at least one Newton step: its force change can lie
      below the residual tolerance (B4 at 1e6 dofs: 2e-13 against 7e-13), and a solve that stops at
      once leaves the gap, and the next augmentation's, where they were (alm: 30 updates, cut-back) */
