@@ -251,6 +251,9 @@ struct _n_SPContact {
   PetscReal       creepRel;                        /* max stick creep in the step / h, last bookkeeping */
   PetscInt        maxFlips;                        /* stick/slip changes per step before a status is frozen */
   PetscBool       safeguard, settled;
+  PetscReal       jumpWait;   /* -contact_friction_jump_wait (contact-friction.c) */
+  PetscInt        jumpWaits;  /* boundaries at which it held the shifts back */
+  PetscInt        boundary;   /* Newton-iteration boundaries since the solve began */
   PetscBool       branchHold, holding; /* -contact_branch_hold; the linearisation after an update holds the branches */
   PetscBool       predict, havePrev;   /* -contact_shift_predict; SPContactPoint.prev holds the step before the last */
   PetscReal       predictRatio;        /* pending prediction for the next solve (0: none), contact-predict.c */
@@ -340,6 +343,7 @@ PETSC_EXTERN PetscReal      SPFrictionStepLimit(SPContact);
 PETSC_EXTERN PetscErrorCode SPFrictionBookkeep(SPContact, PetscBool);
 PETSC_EXTERN PetscBool      SPFrictionConverged(SPContact);
 PETSC_EXTERN PetscErrorCode SPFrictionSettled(SPContact, PetscBool *);
+PETSC_EXTERN PetscErrorCode SPFrictionJumped(SPContact, PetscReal, PetscBool *);
 PETSC_EXTERN PetscErrorCode SPFrictionForces(SPContact, Vec, PetscReal[]);
 /* contact-pairs.c */
 PETSC_EXTERN PetscErrorCode SPContactPairsSetFromOptions(SPContact);

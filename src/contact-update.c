@@ -75,6 +75,7 @@ PetscErrorCode SPContactBeginSolve(SPContact c, Vec X)
   PetscCall(SPContactPredictApply(c));
   PetscCall(Bookkeep(c, 0.0, PETSC_FALSE));
   c->setSettled = PETSC_FALSE;
+  c->boundary   = 0;
   for (PetscInt i = 0; i < c->n; ++i) c->nhist[i] = 0;
   PetscCall(ResetInNewton(c, c->accel));
   PetscCall(ResetInNewton(c, c->accelT));
@@ -119,7 +120,9 @@ static PetscReal UpdatePoint(SPContact c, PetscInt i, PetscBool *rule)
    Newton-iteration boundaries, not once the gap tolerance holds (an update then only perturbs a
    converged state), and, with -contact_shift_settled, only when no point changed its active
    state in the last iteration (the contraction k/(k+eps) of method.md section 2 needs a settled
-   active set; an update during a change overshoots). */
+   active set; an update during a change overshoots); with friction, not after a Newton step that
+   jumped across stick/slip branches (SPFrictionJumped). *settled false holds the tangential
+   update back too. */
 static PetscErrorCode ShiftUpdateApplies(SPContact c, PetscBool *applies, PetscBool *settled)
 {
   PetscInt  n = 0, nall;
@@ -137,7 +140,12 @@ static PetscErrorCode ShiftUpdateApplies(SPContact c, PetscBool *applies, PetscB
   PetscCallMPI(MPI_Allreduce(&n, &nall, 1, MPIU_INT, MPI_SUM, comm));
   PetscCallMPI(MPI_Allreduce(&err, &errAll, 1, MPIU_REAL, MPI_MAX, comm));
   *settled = nall == 0 || !c->settled ? PETSC_TRUE : PETSC_FALSE;
-  *applies  = errAll > c->gapTol && *settled ? PETSC_TRUE : PETSC_FALSE;
+  if (*settled) {
+    PetscBool jumped;
+    PetscCall(SPFrictionJumped(c, errAll, &jumped));
+    if (jumped) *settled = PETSC_FALSE;
+  }
+  *applies = errAll > c->gapTol && *settled ? PETSC_TRUE : PETSC_FALSE;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -246,6 +254,7 @@ PetscErrorCode SPContactNewtonUpdate(SPContact c, Vec W, PetscBool *changed)
   if (fupdate) PetscCall(SPFrictionUpdate(c, applies ? PETSC_FALSE : PETSC_TRUE, &dsT));
   else PetscCall(ResetInNewton(c, c->accelT)); /* the stick/slip set moved: a new map */
   PetscCall(Bookkeep(c, maxDs, PETSC_TRUE));
+  c->boundary++;
   c->setSettled = c->stats.activeChanged == 0 ? PETSC_TRUE : PETSC_FALSE;
   PetscCallMPI(MPI_Allreduce(&maxDs, &all, 1, MPIU_REAL, MPI_MAX, PetscObjectComm((PetscObject)c->dm)));
   *changed = all > 0.0 || dsT > 0.0 ? PETSC_TRUE : PETSC_FALSE;

@@ -22,6 +22,7 @@ PetscErrorCode SPContactCreate(DM dm, SPProblem problem, PetscLogEvent search, S
   c->stickHold = PETSC_TRUE;
   c->slipRtol  = 1e-8;
   c->maxFlips  = 3;
+  c->jumpWait  = 10.0;
   c->stepCap = 1.0;
   c->safeguard = PETSC_TRUE;
   c->settled   = PETSC_TRUE;
@@ -187,6 +188,7 @@ PetscErrorCode SPContactSetFromOptions(SPContact c)
   PetscCheck(c->alpha >= 1e-3 && c->alpha <= 1e8, comm, PETSC_ERR_USER_INPUT, "-contact_alpha %g: outside 1e-3..1e8 (eps h / E); below, the penetration is of the order of the load over E; above, the Jacobian loses all digits. 10 to 1000 are usual", (double)c->alpha);
   PetscCheck(c->alphaT > 0.0, comm, PETSC_ERR_USER_INPUT, "-contact_friction_alpha %g: the tangential penalty factor must be positive", (double)c->alphaT);
   PetscCheck(c->alphaT >= 1e-3 && c->alphaT <= 1e8, comm, PETSC_ERR_USER_INPUT, "-contact_friction_alpha %g: outside 1e-3..1e8 (eps_T h / E)", (double)c->alphaT);
+  PetscCheck(c->jumpWait == 0.0 || (c->jumpWait >= 1.0 && !PetscIsInfOrNanReal(c->jumpWait)), comm, PETSC_ERR_USER_INPUT, "-contact_friction_jump_wait %g: must be 0 (off) or a growth factor >= 1", (double)c->jumpWait);
   PetscCheck(c->creepRtol > 0.0 && c->slipRtol > 0.0, comm, PETSC_ERR_USER_INPUT, "-contact_friction_creep_rtol %g, -contact_friction_slip_rtol %g: must be positive", (double)c->creepRtol, (double)c->slipRtol);
   PetscCheck(!setPenalty || (c->penalty > 0.0 && !PetscIsInfOrNanReal(c->penalty)), comm, PETSC_ERR_USER_INPUT, "-contact_penalty %g: the penalty must be a positive number", (double)c->penalty);
   PetscCheck(!c->gapTolSet || c->gapTol > 0.0, comm, PETSC_ERR_USER_INPUT, "-contact_gap_tol %g: must be positive", (double)c->gapTol);
@@ -461,6 +463,7 @@ PetscErrorCode SPContactView(SPContact c, PetscViewer v)
   if (c->friction) {
     PetscCall(PetscViewerASCIIPrintf(v, "contact_friction_alpha %g\ncontact_stick_points %" PetscInt_FMT "\ncontact_slip_points %" PetscInt_FMT "\n", (double)c->alphaT, st.stickPoints, st.slipPoints));
     PetscCall(PetscViewerASCIIPrintf(v, "contact_max_stick_creep %.10e\ncontact_friction_stick_hold %s\n", (double)st.maxStickCreep, c->stickHold && c->method->timing == SP_UPDATE_NEWTON ? "yes" : "no")); /* in effect: shifted only */
+    PetscCall(PetscViewerASCIIPrintf(v, "contact_friction_jump_waits %" PetscInt_FMT "\n", c->jumpWaits));
     PetscCall(PetscViewerASCIIPrintf(v, "contact_tangential_force_x %.12e\ncontact_tangential_force_y %.12e\ncontact_tangential_force_z %.12e\n", (double)st.tangentialForce[0], (double)st.tangentialForce[1], (double)st.tangentialForce[2]));
   }
   PetscFunctionReturn(PETSC_SUCCESS);

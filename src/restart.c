@@ -16,7 +16,7 @@
 #include <hdf5.h>
 #include <stdlib.h>
 
-#define NCOUNT 26 /* reals per rank in /restart/counters */
+#define NCOUNT 27 /* reals per rank in /restart/counters */
 
 /* A plain (DM-less) copy of the layout of n local reals with block size bs: VecView writes it raw */
 static PetscErrorCode PlainVec(MPI_Comm comm, PetscInt n, PetscInt bs, const char name[], Vec *v)
@@ -35,7 +35,7 @@ static void Counters(PetscBool pack, SPApp a, PetscReal *inc, PetscReal b[])
 {
   SPSolver  s = a->solver;
   SPContact c = a->contact;
-  PetscReal v[NCOUNT] = {a->loadReached, *inc, (PetscReal)a->stepsDone, (PetscReal)a->cutbacks, (PetscReal)s->newtonTotal, (PetscReal)s->linearTotal, (PetscReal)s->funcTotal, (PetscReal)c->evaluations, (PetscReal)c->stepLimits, (PetscReal)c->shiftUpdates, (PetscReal)c->exchanges, (PetscReal)c->received, (PetscReal)c->rebuilds, (PetscReal)c->stats.augmentations, (PetscReal)c->centreSet, c->centre[0], c->centre[1], c->centre[2], (PetscReal)c->exchangeTime, s->fscale, (PetscReal)a->streak, (PetscReal)c->capRetries, (PetscReal)s->reorthogonalise, a->loadBefore, (PetscReal)c->havePrev, (PetscReal)c->predictions};
+  PetscReal v[NCOUNT] = {a->loadReached, *inc, (PetscReal)a->stepsDone, (PetscReal)a->cutbacks, (PetscReal)s->newtonTotal, (PetscReal)s->linearTotal, (PetscReal)s->funcTotal, (PetscReal)c->evaluations, (PetscReal)c->stepLimits, (PetscReal)c->shiftUpdates, (PetscReal)c->exchanges, (PetscReal)c->received, (PetscReal)c->rebuilds, (PetscReal)c->stats.augmentations, (PetscReal)c->centreSet, c->centre[0], c->centre[1], c->centre[2], (PetscReal)c->exchangeTime, s->fscale, (PetscReal)a->streak, (PetscReal)c->capRetries, (PetscReal)s->reorthogonalise, a->loadBefore, (PetscReal)c->havePrev, (PetscReal)c->predictions, (PetscReal)c->jumpWaits};
 
   if (pack) {
     for (PetscInt k = 0; k < NCOUNT; ++k) b[k] = v[k];
@@ -55,10 +55,11 @@ static void Counters(PetscBool pack, SPApp a, PetscReal *inc, PetscReal b[])
   a->loadBefore      = b[23]; /* the stuck points' predictor: the converged load before loadReached */
   c->havePrev        = b[24] != 0.0 ? PETSC_TRUE : PETSC_FALSE;
   c->predictions     = (PetscInt)b[25];
+  c->jumpWaits       = (PetscInt)b[26]; /* shift updates held back after a stick/slip jump */
 }
 
 /* The run's identity, as attributes of /restart: written with the first step, compared on restart */
-#define FORMAT 5 /* 1: vectors in the partition's order (same rank count only); 2: partition-free; 3: + the growth streak; 4: + the recoveries (step-cap retries, GMRES re-orthogonalisation); 5: + the stuck points' predictor (the step before the last) */
+#define FORMAT 6 /* 1: vectors in the partition's order (same rank count only); 2: partition-free; 3: + the growth streak; 4: + the recoveries (step-cap retries, GMRES re-orthogonalisation); 5: + the stuck points' predictor (the step before the last); 6: + the stick/slip jump waits */
 
 typedef struct {
   PetscInt dim, dofs, points, ranks, friction, loadSteps;

@@ -344,5 +344,7 @@ method without a tangential update|input/friction_block2d.opts|-contact_method s
 friction without contact|input/elastic2d.opts|-contact_friction_mu 0.3
 bad tangential penalty factor|input/friction_block2d.opts|-contact_friction_alpha 0
 bad load curve|input/friction_block2d.opts|-bc_0_ramp 0.5,0.2
+jump wait below 1|input/friction_block2d.opts|-contact_friction_jump_wait 0.5
+jump wait NaN|input/friction_block2d.opts|-contact_friction_jump_wait nan
 CASES
 }
