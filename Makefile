@@ -21,8 +21,10 @@ SRC  := $(wildcard src/*.c src/materials/*.c src/methods/*.c)
 OBJ  := $(SRC:%.c=build/%.o)
 GEO  := $(wildcard input/*.geo)
 MSH  := $(GEO:input/%.geo=build/mesh/%.msh)
-# unit drivers: tests/unit/NAME.c -> bin/NAME (header-only kernels, the same flags as the code)
+# unit drivers: tests/unit/NAME.c -> bin/NAME (header-only kernels and the code's functions, the
+# same flags as the code; linked with every object but main's)
 UNIT := $(patsubst tests/unit/%.c,bin/%,$(wildcard tests/unit/*.c))
+LIBOBJ := $(filter-out build/src/main.o,$(OBJ))
 
 .PHONY: all deps run check clean meshes petsc-found unit
 all: deps
@@ -44,9 +46,9 @@ build/%.o: %.c | petsc-found
 
 # `all` builds the unit drivers; `unit` names them (after `all`, so deps run first)
 unit: all
-$(UNIT): bin/%: build/unit/%.o | petsc-found
+$(UNIT): bin/%: build/unit/%.o $(LIBOBJ) | petsc-found
 	@mkdir -p bin
-	$(CC) -o $@ $< $(LDLIBS)
+	$(CC) -o $@ $< $(LIBOBJ) $(LDLIBS)
 build/unit/%.o: tests/unit/%.c | petsc-found
 	@mkdir -p $(dir $@)
 	$(CC) $(CPPFLAGS) $(CFLAGS) -c $< -o $@

@@ -18,6 +18,20 @@ test_kernels_unit() {
   return $rc
 }
 
+# The pair segment choice near a master vertex (tests/unit/test-pairs.c, bin/test-pairs): the
+# nearest segment, and the segment of the last Newton iterate kept while within 1e-4 h of the
+# nearest (the hysteresis that ends the 2-cycle of F2's halved mesh, README "Contact pairs"), at two
+# length scales. Without the rule 4 of its 14 checks fail; with a 100x looser tolerance 2.
+test_pairs_keep_facet() {
+  local bin=bin/test-pairs out=$CASE_DIR/pairs.txt rc=0
+  [ -x "$bin" ] || { echo "$bin missing: build it with make (or make check)"; return 1; }
+  RERUN="$bin"
+  timeout 60 "$bin" >"$out" 2>&1 || rc=1
+  cat "$out"
+  grep -q '^test-pairs: 14 checks, 0 failed$' "$out" || { echo "the driver did not report 14 checks, 0 failed"; rc=1; }
+  return $rc
+}
+
 # kjac_case LABEL METHOD ARGS... : spcontact with the consistent tangent (-contact_tangent full), a
 # direct solve (the full tangent is indefinite at deep penetration: CG would stop) and
 # -snes_test_jacobian at every Newton iterate of every solve (alm: of every augmentation).
