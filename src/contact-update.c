@@ -143,7 +143,7 @@ static PetscErrorCode ShiftUpdateApplies(SPContact c, PetscBool *applies, PetscB
   if (*settled) {
     PetscBool jumped;
     PetscCall(SPFrictionJumped(c, errAll, &jumped));
-    if (jumped) *settled = PETSC_FALSE;
+    if (jumped) *settled = PETSC_FALSE, c->jumpWaits++;
   }
   *applies = errAll > c->gapTol && *settled ? PETSC_TRUE : PETSC_FALSE;
   PetscFunctionReturn(PETSC_SUCCESS);
