@@ -6,13 +6,21 @@
 
 # The unit driver: every check prints "name dim samples skipped max_rel_err tol ok|FAILED"; the
 # driver exits nonzero if any check fails (max relative error > 1e-6) or has no sample.
-test_kernels_unit() {
-  local bin=bin/test-kernels out=$CASE_DIR/unit.txt rc=0
+# run_unit BIN OUT SECONDS PATTERN: a unit driver with its output in OUT (printed); fails unless it
+# exits 0 within SECONDS and prints a line matching PATTERN
+run_unit() {
+  local bin=$1 out=$2 secs=$3 pat=$4 rc=0
   [ -x "$bin" ] || { echo "$bin missing: build it with make (or make check)"; return 1; }
   RERUN="$bin"
-  timeout 300 "$bin" >"$out" 2>&1 || rc=1
+  timeout "$secs" "$bin" >"$out" 2>&1 || rc=1
   cat "$out"
-  grep -q ' checks, 0 failed$' "$out" || { echo "the driver did not report 0 failed checks"; rc=1; }
+  grep -q "$pat" "$out" || { echo "$bin printed no line matching '$pat'"; rc=1; }
+  return $rc
+}
+
+test_kernels_unit() {
+  local out=$CASE_DIR/unit.txt rc=0
+  run_unit bin/test-kernels "$out" 300 ' checks, 0 failed$' || rc=1
   # no check may lose samples to the kink/projection guard (see the driver's header)
   awk '/ max_rel_err / && $7 != 0 { print "skipped samples: " $0; bad = 1 } END { exit bad }' "$out" || rc=1
   return $rc
@@ -23,13 +31,7 @@ test_kernels_unit() {
 # nearest (the hysteresis that ends the 2-cycle of F2's halved mesh, README "Contact pairs"), at two
 # length scales. Without the rule 4 of its 14 checks fail; with a 100x looser tolerance 2.
 test_pairs_keep_facet() {
-  local bin=bin/test-pairs out=$CASE_DIR/pairs.txt rc=0
-  [ -x "$bin" ] || { echo "$bin missing: build it with make (or make check)"; return 1; }
-  RERUN="$bin"
-  timeout 60 "$bin" >"$out" 2>&1 || rc=1
-  cat "$out"
-  grep -q '^test-pairs: 14 checks, 0 failed$' "$out" || { echo "the driver did not report 14 checks, 0 failed"; rc=1; }
-  return $rc
+  run_unit bin/test-pairs "$CASE_DIR/pairs.txt" 60 '^test-pairs: 14 checks, 0 failed$'
 }
 
 # kjac_case LABEL METHOD ARGS... : spcontact with the consistent tangent (-contact_tangent full), a
