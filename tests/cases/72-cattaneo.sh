@@ -182,3 +182,18 @@ test_cattaneo2d_alpha1000_jump_wait() {
   done
   return $rc
 }
+
+# F3 at alpha 1000 with the default step cap: the normal step cycles between active sets (README,
+# F3). With friction no load step is solved again with a tighter cap by itself, so the stall
+# message names -contact_step_cap (F3 converges with 0.1); the run stops with exit 2 and leaves
+# only .part files. One step, no cut-back, the stall after 8 iterations: about 40 s on 2 ranks.
+test_cattaneo3d_alpha1000_cycle_message() {
+  local out=$CASE_DIR/f3_cycle.txt rc=0 code=0
+  spc "$out" 2 -options_file input/cattaneo3d.opts -load_steps 5 -bc_2_ramp 0,0.2 -bc_3_ramp 0.2,1 -bc_4_ramp 0.2,1 \
+    -contact_alpha 1000 -load_max_cutbacks 0 -solver_stall_its 8 -output_dir "$CASE_DIR" -output_name f3_cycle || code=$?
+  assert_eq exit_code "$code" 2 || rc=1
+  assert_eq cycle_message "$(grep -c '^solve stalled: .*(an active-set cycle).*, a tighter -contact_step_cap or' "$out")" 1 || rc=1
+  assert_eq status "$(sval "$out" status)" failed || rc=1
+  assert_eq final_files "$(ls "$CASE_DIR" | grep -c '^f3_cycle\(\.h5\|\.xdmf\|\.csv\|_contact\.csv\)$')" 0 || rc=1
+  return $rc
+}
