@@ -97,7 +97,7 @@ static void PushHistory(SPContact c, PetscInt i, PetscReal s, PetscReal g)
 }
 
 /* The in-Newton shift update for point i (method.md section 4, safeguards 1 and 2); *rule: the
-   method's rule gave it (the point is active in both iterates), else it is kept or reset */
+   method's rule gave it (the point is active in both iterates), else it is kept */
 static PetscReal UpdatePoint(SPContact c, PetscInt i, PetscBool *rule)
 {
   SPPointState   *st        = &c->pt[i].st;
@@ -105,15 +105,32 @@ static PetscReal UpdatePoint(SPContact c, PetscInt i, PetscBool *rule)
   const PetscInt  m         = c->params.history;
   *rule                     = PETSC_FALSE;
   if ((st->active || !c->safeguard) && activeNow) { /* active in the solve that produced the iterate, and now */
-    *rule             = PETSC_TRUE;
-    st->inactiveCount = 0;
+    *rule = PETSC_TRUE;
     PushHistory(c, i, st->sN, c->pt[i].geo.gap);
     return PetscMin(0.0, c->method->update(c->nhist[i], &c->hist[2 * m * i], &c->hist[2 * m * i + m]));
   }
   c->nhist[i] = 0;
-  if (!activeNow) st->inactiveCount++;
-  else st->inactiveCount = 0;
-  return st->inactiveCount >= 2 ? 0.0 : st->sN; /* reset after two inactive iterates in a row */
+  return st->sN; /* kept (ResetStaleShifts zeroed it after two inactive iterates) */
+}
+
+/* method.md safeguard 2: a point inactive at two Newton iterates in a row loses its shift, at every
+   boundary (*maxDs: the largest reset). When the iterates were counted only at the boundaries that
+   update the shifts, a point that opened while the active set moved kept its shift s < 0 until two
+   updates later: active wherever g < -s, it pushed at a positive gap like an obstacle raised by
+   |s|. F1c (the block driven over the plane, alpha 10), step 2: the rear edge opened with s about
+   -7.6e-5 (the penalty's penetration of the normal step), and after the first update lifted the
+   block 26 points closed again at gaps up to 5.6e-5; 20 Newton iterations in that step, 15 with
+   the reset (75 -> 70 over the run; 57 -> 55 and 50 -> 49 at alpha 100 and 1000). A reset never
+   activates a point (g + 0 >= g + s >= 0). */
+static void ResetStaleShifts(SPContact c, PetscReal *maxDs)
+{
+  for (PetscInt i = 0; i < c->n; ++i) {
+    SPPointState *st = &c->pt[i].st;
+    st->inactiveCount = SPContactPointActive(c, i) ? 0 : st->inactiveCount + 1;
+    if (st->inactiveCount < 2 || st->sN == 0.0) continue;
+    *maxDs = PetscMax(*maxDs, PetscAbsReal(st->sN));
+    st->sN = 0.0;
+  }
 }
 
 /* Whether the in-Newton shift update applies at this boundary: only for methods that update at
@@ -234,6 +251,7 @@ PetscErrorCode SPContactNewtonUpdate(SPContact c, Vec W, PetscBool *changed)
   c->slipLimited = PETSC_FALSE;
 
   if (applies && hold) HoldBranches(c);
+  if (c->method->timing == SP_UPDATE_NEWTON) ResetStaleShifts(c, &maxDs);
   if (applies) PetscCall(UpdateShifts(c, &maxDs));
   else PetscCall(ResetInNewton(c, c->accel)); /* the active set moved (or the gaps hold): a new map */
   /* the tangential shift, after the normal one. Without the branch hold only on a settled stick/slip

@@ -190,10 +190,12 @@ test_friction_shift_predict() {
 
 # F1c: the 3D block driven obliquely (30 degrees) to steady sliding (travel 0.3, see the input's
 # header for why): |T| = mu N = 0.003 and T_y/T_x = tan 30 to 1e-8, every point slipping, no
-# cut-back; shifted on 1, 2 and 3 ranks (figures identical to 1e-8), penalty and alm on 1
+# cut-back; shifted on 1, 2 and 3 ranks (figures identical to 1e-8), penalty and alm on 1. The
+# seed's claim at alpha 10: shifted within penalty + 3 Newton iterations per load step (70 against
+# 37 + 3 x 11; 75 before a point's shift was reset after two inactive iterates of any kind)
 test_friction_f1c_oblique() {
   local rc=0
-  for run in shifted:1 shifted:2 shifted:3 penalty:1 alm:1; do
+  for run in penalty:1 shifted:1 shifted:2 shifted:3 alm:1; do
     local m=${run%:*} np=${run#*:} out=$CASE_DIR/${run%:*}_np${run#*:}.txt tx ty
     friction_run "${m}_np$np" "$np" -options_file input/friction_slide3d.opts -contact_method "$m" || return 1
     tx=$(sval "$out" contact_tangential_force_x); ty=$(sval "$out" contact_tangential_force_y)
@@ -202,6 +204,8 @@ test_friction_f1c_oblique() {
     assert_close "Ty_over_Tx_${m}_np$np" "$(awk -v x="$tx" -v y="$ty" 'BEGIN{printf "%.15g", y/x}')" 0.5773502691896258 1e-8 || rc=1
     assert_close "stick_points_${m}_np$np" "$(sval "$out" contact_stick_points)" 0 0 0 || rc=1
     [ "$m" = penalty ] || assert_le "penetration_${m}_np$np" "$(sval "$out" contact_max_penetration)" 5e-12 || rc=1 # 1e-10 h
+    [ "$m" = shifted ] && { assert_le "newton_${m}_np${np}_within_penalty_plus_3_per_step" "$(sval "$out" newton_iterations)" \
+      "$(($(sval "$CASE_DIR/penalty_np1.txt" newton_iterations) + 3 * $(sval "$out" load_steps)))" || rc=1; }
   done
   same_summary "$CASE_DIR/shifted_np1.txt" "$CASE_DIR/shifted_np2.txt" 1e-8 contact_tangential_force_x contact_tangential_force_y contact_force_z || rc=1
   same_summary "$CASE_DIR/shifted_np1.txt" "$CASE_DIR/shifted_np3.txt" 1e-8 contact_tangential_force_x contact_tangential_force_y contact_force_z || rc=1
