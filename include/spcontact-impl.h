@@ -419,9 +419,14 @@ struct _n_SPSolver {
   PetscInt            refinedSteps, refinedLinear; /* over the run: steps refined, their linear iterations (summary) */
   PetscBool           inexactInner;          /* -solver_inexact_inner (methods that update after a converged solve) */
   PetscReal           innerTarget, solveGap[2]; /* this iterate's inner-solve target (0: the residual target alone); gap error after the load step's last two converged solves (0: none) */
+  PetscInt            directIts;     /* -solver_direct_switch: a 2D solve with more linear iterations switches to a factorization (solver-direct.c; 0: never) */
+  PetscBool           directAllowed; /* this run may still switch */
+  PetscInt            directStep;    /* the load step of the switch (0: none) */
 };
 
 PETSC_EXTERN PetscErrorCode SPSolverSetUpAccept(SPSolver);
+PETSC_EXTERN PetscErrorCode SPSolverSetUpDirect(SPSolver);
+PETSC_EXTERN PetscErrorCode SPSolverDirectCheck(SPSolver, PetscInt);
 
 struct _n_SPOutput {
   DM          dm;  /* not owned */

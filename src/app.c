@@ -161,7 +161,7 @@ static PetscReal PeakMemoryMiB(void)
 PetscErrorCode SPAppSummary(SPApp a)
 {
   PetscViewer    v = PETSC_VIEWER_STDOUT_(a->comm);
-  PetscInt       newton, linear, functions, reuses, refined, refinedLinear, accepted;
+  PetscInt       newton, linear, functions, reuses, refined, refinedLinear, accepted, directStep;
   PetscReal      umax, err;
   PetscBool      hasErr, on;
   PetscLogDouble t1;
@@ -185,6 +185,8 @@ PetscErrorCode SPAppSummary(SPApp a)
   PetscCall(SPSolverGetAccepted(a->solver, &accepted));
   PetscCall(PetscViewerASCIIPrintf(v, "linear_solves_accepted %" PetscInt_FMT "\n", accepted));
   PetscCall(PetscViewerASCIIPrintf(v, "krylov_reorthogonalised %s\n", SPSolverReorthogonalises(a->solver) ? "yes" : "no"));
+  PetscCall(SPSolverGetDirectStep(a->solver, &directStep));
+  PetscCall(PetscViewerASCIIPrintf(v, "direct_solver_from_step %" PetscInt_FMT "\n", directStep));
   PetscCall(SPSolverGetBulkOperator(a->solver, &bulk));
   PetscCall(PetscViewerASCIIPrintf(v, "bulk_operator %s\n", bulk));
   PetscCall(PetscViewerASCIIPrintf(v, "displacement_max %.10e\n", (double)umax));

@@ -40,10 +40,12 @@ static PetscErrorCode SolveStep(SPApp app, PetscReal load, PetscReal ratio, Pets
   PetscCall(SPSolverSetHistory(app->solver, fp, step));
   SPContactPredictNext(app->contact, ratio);
   PetscCall(SolveAndUpdate(app, &reason));
-  for (PetscInt k = 0; k < 2 && reason < 0; ++k) { /* the recoveries (the GMRES one once per run, the */
-    PetscBool retry = PETSC_FALSE;                  /* step cap once per step): the step again, no cut-back */
-    if (reason == SNES_DIVERGED_LINEAR_SOLVE) PetscCall(SPSolverRecoverBreakdown(app->solver, &retry));
-    else if (SPSolverStalled(app->solver) || reason == SNES_DIVERGED_MAX_IT) PetscCall(SPContactTightenStepCap(app->contact, &retry));
+  for (PetscInt k = 0; k < 2 && reason < 0; ++k) { /* the recoveries (the direct solver and the GMRES */
+    PetscBool retry = PETSC_FALSE;                  /* one once per run, the step cap once per step): the step again, no cut-back */
+    if (reason == SNES_DIVERGED_LINEAR_SOLVE) {
+      PetscCall(SPSolverRecoverDirect(app->solver, &retry));
+      if (!retry) PetscCall(SPSolverRecoverBreakdown(app->solver, &retry));
+    } else if (SPSolverStalled(app->solver) || reason == SNES_DIVERGED_MAX_IT) PetscCall(SPContactTightenStepCap(app->contact, &retry));
     if (!retry) break;
     PetscCall(VecCopy(ubackup, app->u));
     PetscCall(SPContactRestoreState(app->contact));

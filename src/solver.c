@@ -262,7 +262,7 @@ static PetscErrorCode RefineStep(SPSolver s, Vec X, Vec Y, Vec W, PetscBool *ref
   PetscBool feeds, direct, guess;
   KSP       ksp;
   Vec       F;
-  PetscInt  lits;
+  PetscInt  lits = 0;
 
   PetscFunctionBeginUser;
   *refined = PETSC_FALSE;
@@ -307,7 +307,7 @@ static PetscErrorCode ShiftHook(SNESLineSearch ls, Vec X, Vec Y, Vec W, PetscBoo
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode LogIteration(SPSolver s, PetscInt it, PetscReal fnorm)
+static PetscErrorCode LogIteration(SPSolver s, PetscInt it, PetscReal fnorm, PetscInt *solveIts)
 {
   SPContactStats st = {0};
   PetscInt       lits;
@@ -320,6 +320,7 @@ static PetscErrorCode LogIteration(SPSolver s, PetscInt it, PetscReal fnorm)
   if (it == 0) s->lastLinear = 0;
   lits -= s->lastLinear;
   s->lastLinear += lits;
+  *solveIts = lits;
   lits += s->refineStep; /* the step's refinement (RefineStep) */
   s->refineStep = 0;
   if (on) PetscCall(SPContactMonitor(s->contact, it, fnorm));
@@ -587,6 +588,7 @@ static PetscErrorCode Converged(SNES snes, PetscInt it, PetscReal xnorm, PetscRe
   SPSolver  s = (SPSolver)ctx;
   PetscBool on, ok;
   PetscReal target;
+  PetscInt  lits = 0;
 
   PetscFunctionBeginUser;
   if (it == 0) s->fscale = PetscMax(s->fscale, fnorm);
@@ -598,7 +600,8 @@ static PetscErrorCode Converged(SNES snes, PetscInt it, PetscReal xnorm, PetscRe
      below the residual tolerance (B4 at 1e6 dofs: 2e-13 against 7e-13), and a solve that stops at
      once leaves the gap, and the next augmentation's, where they were (alm: 30 updates, cut-back) */
   if (it == 0 && s->resolve && *reason > 0) *reason = SNES_CONVERGED_ITERATING;
-  PetscCall(LogIteration(s, it, fnorm));
+  PetscCall(LogIteration(s, it, fnorm, &lits));
+  PetscCall(SPSolverDirectCheck(s, lits));
   PetscCall(SPContactIsActive(s->contact, &on));
   if (on && (*reason == SNES_CONVERGED_ITERATING || *reason == SNES_CONVERGED_SNORM_RELATIVE)) PetscCall(RoundOffFloor(s, it, fnorm, reason));
   if (on && *reason > 0) {
@@ -636,6 +639,7 @@ PetscErrorCode SPSolverCreate(DM dm, SPProblem problem, SPContact contact, SPLog
   s->stallIts = 15;
   s->jacReuseMax = 5;
   s->acceptRtol  = 1e-3;
+  s->directIts   = 150;
   s->rtolMax     = 1e-3;
   s->settledFactor = 1e-3;
   s->measured      = PETSC_TRUE;
@@ -728,12 +732,14 @@ PetscErrorCode SPSolverSetFromOptions(SPSolver s)
   PetscCall(PetscOptionsBool("-solver_inexact_refine", "Inexact Newton with the measured contraction (shifted): a step that needs the tight tolerance only because it may feed a shift update before the contraction is measured (a solve's first step, a settled step before the first measurement) is solved to the loosest tolerance and continued to the tight one only if the shifts then move (false: solved tight at once)", "SPSolverSetFromOptions", s->refine, &s->refine, NULL));
   PetscCall(PetscOptionsBool("-solver_inexact_inner", "Inexact Newton, methods that update the shifts after a converged solve (alm), frictionless: a solve counts as converged on a settled active set once |F| <= 0.1 rho |dF| (dF: the forces the next update adds, rho: the update's contraction), the last one (gap tolerance met) at the residual target; its steps are solved no tighter than that needs (false: every solve to the residual target)", "SPSolverSetFromOptions", s->inexactInner, &s->inexactInner, NULL));
   PetscCall(PetscOptionsReal("-solver_linear_accept", "A linear solve that stops short of its tolerance (its iteration limit, a GMRES breakdown) counts as converged if its true residual |b - A x| is at most this x |b| (0: never; it then fails the Newton solve)", "SPSolverSetFromOptions", s->acceptRtol, &s->acceptRtol, NULL));
+  PetscCall(PetscOptionsInt("-solver_direct_switch", "2D, solver not chosen by -ksp_type/-pc_type: once a linear solve takes more than this many iterations, or fails, the rest of the run factors the Jacobian (LU, MUMPS) (0: never)", "SPSolverSetFromOptions", s->directIts, &s->directIts, NULL));
   PetscCall(PetscOptionsInt("-solver_stall_its", "Stop a Newton solve after this many iterations without a 1% decrease of the residual or the gap error (0: never)", "SPSolverSetFromOptions", s->stallIts, &s->stallIts, NULL));
   PetscCall(PetscOptionsBool("-solver_fast_prealloc", "First-order mesh: preallocate the matrix from vertex adjacency and build the rigid-body modes from vertex coordinates (false: DMCreateMatrix, DMPlexCreateRigidBody)", "SPSolverSetFromOptions", prealloc, &prealloc, NULL));
   PetscCall(PetscOptionsBool("-solver_gamg_shared_graph", "Frictionless small strain without contact pairs (a symmetric matrix, graph not filtered): GAMG aggregates on the system matrix itself instead of PETSc's copy of it (same aggregates, one matrix less at the peak; false: PETSc's copy). With pairs or friction the graph is PETSc's filtered copy (-pc_gamg_threshold 0)", "SPSolverSetFromOptions", share, &share, NULL));
   PetscOptionsEnd();
   PetscCheck(s->atolRel >= 0.0 && s->atolRel < 1.0, PetscObjectComm((PetscObject)s->dm), PETSC_ERR_USER_INPUT, "-solver_atol_rel %g: must be in [0, 1)", (double)s->atolRel);
   PetscCheck(s->acceptRtol >= 0.0 && s->acceptRtol < 1.0, PetscObjectComm((PetscObject)s->dm), PETSC_ERR_USER_INPUT, "-solver_linear_accept %g: must be in [0, 1) (0: a linear solve short of its tolerance fails the Newton solve)", (double)s->acceptRtol);
+  PetscCheck(s->directIts >= 0, PetscObjectComm((PetscObject)s->dm), PETSC_ERR_USER_INPUT, "-solver_direct_switch %" PetscInt_FMT ": must be >= 0 (0: never switch to a direct solver)", s->directIts);
   PetscCheck(s->stallIts >= 0, PetscObjectComm((PetscObject)s->dm), PETSC_ERR_USER_INPUT, "-solver_stall_its %" PetscInt_FMT ": must be >= 0 (0: no stagnation test)", s->stallIts);
   PetscCheck(s->jacReuseMax >= 0, PetscObjectComm((PetscObject)s->dm), PETSC_ERR_USER_INPUT, "-solver_jacobian_reuse %" PetscInt_FMT ": must be >= 0 (0: assemble every Newton iteration)", s->jacReuseMax);
   PetscCheck(s->rtolMax > 0.0 && s->rtolMax < 1.0, PetscObjectComm((PetscObject)s->dm), PETSC_ERR_USER_INPUT, "-solver_inexact_rtol %g: must be in (0, 1) (1e-3 is the default; -solver_inexact false for exact solves)", (double)s->rtolMax);
@@ -774,6 +780,7 @@ PetscErrorCode SPSolverSetFromOptions(SPSolver s)
   PetscCall(GraphWithoutZeros(s, on));
   PetscCall(SNESSetFromOptions(s->snes));
   PetscCall(SPSolverSetUpAccept(s));
+  PetscCall(SPSolverSetUpDirect(s));
   {
     KSP ksp;
     PetscCall(SNESGetKSP(s->snes, &ksp));

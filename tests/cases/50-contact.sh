@@ -216,7 +216,8 @@ test_contact_inexact_penalty_search() {
 # iterations per solve (about 20 to 37 reach each step's tolerance). With -solver_linear_accept
 # 0.05 the steps whose true residual fell 20x are inexact Newton steps: the same 9 Newton
 # iterations as the default run, the force and peak pressure of the default run, on 1, 2 and 3
-# ranks. With 0 (the check off) every such solve fails the Newton solve: DIVERGED_LINEAR_SOLVE,
+# ranks. With 0 (the check off) and no switch to a direct solver (-solver_direct_switch 0; with it
+# the run factors and recovers, test direct_switch_recovery) every such solve fails the Newton solve: DIVERGED_LINEAR_SOLVE,
 # the cut-back budget, exit 2, no result passed off as converged.
 test_contact_linear_accept() {
   local rc=0 ref=$CASE_DIR/ref.txt np out
@@ -233,7 +234,7 @@ test_contact_linear_accept() {
     assert_le "penetration_np$np" "$(sval "$out" contact_max_penetration)" "$(sval "$out" contact_gap_tol)" || rc=1
   done
   out=$CASE_DIR/off.txt
-  spc "$out" 1 -options_file input/hertz2d.opts -ksp_max_it 12 -solver_linear_accept 0 -load_max_cutbacks 1 -output_dir "$CASE_DIR" -output_name off
+  spc "$out" 1 -options_file input/hertz2d.opts -ksp_max_it 12 -solver_linear_accept 0 -solver_direct_switch 0 -load_max_cutbacks 1 -output_dir "$CASE_DIR" -output_name off
   assert_eq exit_off $? 2 || rc=1
   assert_eq converged_off "$(sval "$out" converged)" no || rc=1
   grep -q '^load step 1 (load factor 1.): solve did not converge (DIVERGED_LINEAR_SOLVE)' "$out" || { echo "no DIVERGED_LINEAR_SOLVE line FAILED"; rc=1; }

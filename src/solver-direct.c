@@ -1,0 +1,93 @@
+/* A 2D run whose iterative linear solves struggle goes on with a sparse direct solver.
+   At high alpha the penalty entries make the system ill-conditioned, and on two bodies GAMG's
+   aggregates cannot follow them: F2 (Cattaneo-Mindlin, friction) at alpha 1000 took about 160 s
+   of GMRES with up to 2000 iterations per solve, B6 (two discs) at alpha 1000 10141 CG iterations
+   for 39 Newton iterations. A 2D factorization is cheap (nested dissection: fill n log n), so once
+   one linear solve takes more than -solver_direct_switch iterations, or fails, the rest of the run
+   factors the Jacobian (LU, MUMPS; PETSc's own LU on one process without MUMPS): F2 at alpha 1000
+   in 19 s, B6 in 5 s, the same Newton iterations within 2. Not in 3D, where a factorization with
+   Debian's reference BLAS costs far more than the iterations it saves (B3, 15887 dofs: 20 s against
+   2.5 s), and not when the user chose the solver (-ksp_type or -pc_type). The factorization is
+   reused with the Jacobian (Jacobian reuse). A restart starts with the iterative solver again. */
+#include <spcontact-impl.h>
+
+/* After SNESSetFromOptions: whether this run may switch (2D, the solver not the user's, a
+   factorization available) */
+PetscErrorCode SPSolverSetUpDirect(SPSolver s)
+{
+  PetscInt    dim;
+  PetscBool   kspSet, pcSet, mumps;
+  PetscMPIInt size;
+
+  PetscFunctionBeginUser;
+  s->directAllowed = PETSC_FALSE;
+  PetscCall(DMGetDimension(s->dm, &dim));
+  PetscCall(PetscOptionsHasName(NULL, NULL, "-ksp_type", &kspSet));
+  PetscCall(PetscOptionsHasName(NULL, NULL, "-pc_type", &pcSet));
+  if (s->directIts <= 0 || dim != 2 || kspSet || pcSet) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(MatGetFactorAvailable(s->J, MATSOLVERMUMPS, MAT_FACTOR_LU, &mumps));
+  PetscCallMPI(MPI_Comm_size(PetscObjectComm((PetscObject)s->dm), &size));
+  if (!mumps && size > 1) PetscFunctionReturn(PETSC_SUCCESS);
+  s->directAllowed = PETSC_TRUE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The switch itself; why: what the last solve did, for the one-line message */
+static PetscErrorCode SwitchToDirect(SPSolver s, const char *why)
+{
+  KSP       ksp;
+  PC        pc;
+  PetscBool mumps;
+  KSPType   ktype;
+
+  PetscFunctionBeginUser;
+  PetscCall(SNESGetKSP(s->snes, &ksp));
+  PetscCall(KSPGetType(ksp, &ktype));
+  PetscCall(PetscPrintf(PetscObjectComm((PetscObject)s->dm), "linear solver: %s %s (2D): from here on a sparse direct solver (LU); -solver_direct_switch 0 keeps the iterative one\n", ktype, why));
+  PetscCall(MatGetFactorAvailable(s->J, MATSOLVERMUMPS, MAT_FACTOR_LU, &mumps));
+  PetscCall(KSPSetType(ksp, KSPPREONLY));
+  PetscCall(KSPGetPC(ksp, &pc));
+  PetscCall(PCSetType(pc, PCLU));
+  PetscCall(PCFactorSetMatSolverType(pc, mumps ? MATSOLVERMUMPS : MATSOLVERPETSC));
+  s->directAllowed = PETSC_FALSE;
+  s->directStep    = s->step;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* At a Newton iteration boundary: the last linear solve took lits iterations */
+PetscErrorCode SPSolverDirectCheck(SPSolver s, PetscInt lits)
+{
+  char why[64];
+
+  PetscFunctionBeginUser;
+  if (!s->directAllowed || lits <= s->directIts) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(PetscSNPrintf(why, sizeof(why), "took %" PetscInt_FMT " iterations in one solve (-solver_direct_switch %" PetscInt_FMT ")", lits, s->directIts));
+  PetscCall(SwitchToDirect(s, why));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* A Newton solve that failed in its linear solve: switch and solve the step again (*retry) */
+PetscErrorCode SPSolverRecoverDirect(SPSolver s, PetscBool *retry)
+{
+  KSP                ksp;
+  KSPConvergedReason kr;
+  char               why[64];
+
+  PetscFunctionBeginUser;
+  *retry = PETSC_FALSE;
+  if (!s->directAllowed) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(SNESGetKSP(s->snes, &ksp));
+  PetscCall(KSPGetConvergedReason(ksp, &kr));
+  PetscCall(PetscSNPrintf(why, sizeof(why), "failed (%s); the load step again", KSPConvergedReasons[kr]));
+  PetscCall(SwitchToDirect(s, why));
+  *retry = PETSC_TRUE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The load step from which the run factors its Jacobian (0: never; summary key direct_solver_from_step) */
+PetscErrorCode SPSolverGetDirectStep(SPSolver s, PetscInt *step)
+{
+  PetscFunctionBeginUser;
+  *step = s->directStep;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
