@@ -5,7 +5,9 @@
    for 39 Newton iterations. A 2D factorization is cheap (nested dissection: fill n log n), so once
    one linear solve takes more than -solver_direct_switch iterations, or fails, the rest of the run
    factors the Jacobian (LU, MUMPS; PETSc's own LU on one process without MUMPS): F2 at alpha 1000
-   in 19 s, B6 in 5 s, the same Newton iterations within 2. Not in 3D, where a factorization with
+   in 19 s, B6 in 5 s, the same Newton iterations within 2. The default 100 is about three times
+   the break-even at 2e4 dofs (a factorization costs 30 to 40 Krylov iterations there): it also
+   takes F2 at alpha 100 from 22.6 to 10.7 s, and leaves every run at alpha 10 iterative. Not in 3D, where a factorization with
    Debian's reference BLAS costs far more than the iterations it saves (B3, 15887 dofs: 20 s against
    2.5 s), and not when the user chose the solver (-ksp_type or -pc_type). The factorization is
    reused with the Jacobian (Jacobian reuse). A restart starts with the iterative solver again. */

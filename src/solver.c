@@ -639,7 +639,7 @@ PetscErrorCode SPSolverCreate(DM dm, SPProblem problem, SPContact contact, SPLog
   s->stallIts = 15;
   s->jacReuseMax = 5;
   s->acceptRtol  = 1e-3;
-  s->directIts   = 150;
+  s->directIts   = 100;
   s->rtolMax     = 1e-3;
   s->settledFactor = 1e-3;
   s->measured      = PETSC_TRUE;

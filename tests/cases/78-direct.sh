@@ -1,4 +1,4 @@
-# The 2D switch to a sparse direct solver (-solver_direct_switch, default 150; src/solver-direct.c):
+# The 2D switch to a sparse direct solver (-solver_direct_switch, default 100; src/solver-direct.c):
 # once a linear solve of the default iterative solver takes more than that many iterations, or
 # fails, a 2D run factors its Jacobian (LU, MUMPS) for the rest of the run.
 
@@ -19,7 +19,7 @@ test_direct_switch_b6_alpha1000() {
     assert_eq "converged_np$np" "$(sval "$out" converged)" yes || rc=1
     assert_eq "cutbacks_np$np" "$(sval "$out" cutbacks)" 0 || rc=1
     assert_eq "from_step_np$np" "$(sval "$out" direct_solver_from_step)" 1 || rc=1
-    assert_eq "message_np$np" "$(grep -c '^linear solver: cg took [0-9]* iterations in one solve (-solver_direct_switch 150) (2D): from here on a sparse direct solver (LU)' "$out")" 1 || rc=1
+    assert_eq "message_np$np" "$(grep -c '^linear solver: cg took [0-9]* iterations in one solve (-solver_direct_switch 100) (2D): from here on a sparse direct solver (LU)' "$out")" 1 || rc=1
     assert_le "newton_np$np" "$(sval "$out" newton_iterations)" $(( $(sval "$ref" newton_iterations) + 2 )) || rc=1
     assert_le "linear_np$np" "$(sval "$out" linear_iterations)" $(( $(sval "$ref" linear_iterations) / 10 )) || rc=1
     assert_close "force_np$np" "$(sval "$out" contact_force_y)" 0.005 1e-8 || rc=1
