@@ -7,10 +7,11 @@
    factors the Jacobian (LU, MUMPS; PETSc's own LU on one process without MUMPS): F2 at alpha 1000
    in 19 s, B6 in 5 s, the same Newton iterations within 2. The default 100 is about three times
    the break-even at 2e4 dofs (a factorization costs 30 to 40 Krylov iterations there): it also
-   takes F2 at alpha 100 from 22.6 to 10.7 s, and leaves every run at alpha 10 iterative. Not in 3D, where a factorization with
-   Debian's reference BLAS costs far more than the iterations it saves (B3, 15887 dofs: 20 s against
-   2.5 s), and not when the user chose the solver (-ksp_type or -pc_type). The factorization is
-   reused with the Jacobian (Jacobian reuse). A restart starts with the iterative solver again. */
+   takes F2 at alpha 100 from 22.6 to 10.7 s, and leaves every run at alpha 10 iterative. Not in
+   3D, where a factorization with Debian's reference BLAS costs far more than the iterations it
+   saves (B3, 15887 dofs: 20 s against 2.5 s), and not when the user chose the solver (-ksp_type
+   or -pc_type). The factorization is reused with the Jacobian (Jacobian reuse). A restart starts
+   with the iterative solver again. */
 #include <spcontact-impl.h>
 
 /* After SNESSetFromOptions: whether this run may switch (2D, the solver not the user's, a
@@ -59,7 +60,7 @@ static PetscErrorCode SwitchToDirect(SPSolver s, const char *why)
 /* At a Newton iteration boundary: the last linear solve took lits iterations */
 PetscErrorCode SPSolverDirectCheck(SPSolver s, PetscInt lits)
 {
-  char why[64];
+  char why[128];
 
   PetscFunctionBeginUser;
   if (!s->directAllowed || lits <= s->directIts) PetscFunctionReturn(PETSC_SUCCESS);
@@ -73,7 +74,7 @@ PetscErrorCode SPSolverRecoverDirect(SPSolver s, PetscBool *retry)
 {
   KSP                ksp;
   KSPConvergedReason kr;
-  char               why[64];
+  char               why[128];
 
   PetscFunctionBeginUser;
   *retry = PETSC_FALSE;
