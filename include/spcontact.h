@@ -131,6 +131,7 @@ PETSC_EXTERN PetscErrorCode SPSolverGetAccepted(SPSolver, PetscInt *);
 PETSC_EXTERN PetscErrorCode SPSolverRecoverBreakdown(SPSolver, PetscBool *);
 PETSC_EXTERN PetscErrorCode SPSolverRecoverDirect(SPSolver, PetscBool *);
 PETSC_EXTERN PetscErrorCode SPSolverGetDirectStep(SPSolver, PetscInt *);
+PETSC_EXTERN PetscErrorCode SPSolverResumeDirect(SPSolver, PetscInt);
 PETSC_EXTERN PetscErrorCode SPSolverReorthogonalise(SPSolver);
 PETSC_EXTERN PetscBool      SPSolverReorthogonalises(SPSolver);
 PETSC_EXTERN PetscBool      SPSolverStalled(SPSolver);

@@ -16,7 +16,8 @@
 #include <hdf5.h>
 #include <stdlib.h>
 
-#define NCOUNT 27 /* reals per rank in /restart/counters */
+#define NCOUNT  28 /* reals per rank in /restart/counters */
+#define NCOUNT6 27 /* format 6: without the direct solver's step */
 
 /* A plain (DM-less) copy of the layout of n local reals with block size bs: VecView writes it raw */
 static PetscErrorCode PlainVec(MPI_Comm comm, PetscInt n, PetscInt bs, const char name[], Vec *v)
@@ -35,7 +36,7 @@ static void Counters(PetscBool pack, SPApp a, PetscReal *inc, PetscReal b[])
 {
   SPSolver  s = a->solver;
   SPContact c = a->contact;
-  PetscReal v[NCOUNT] = {a->loadReached, *inc, (PetscReal)a->stepsDone, (PetscReal)a->cutbacks, (PetscReal)s->newtonTotal, (PetscReal)s->linearTotal, (PetscReal)s->funcTotal, (PetscReal)c->evaluations, (PetscReal)c->stepLimits, (PetscReal)c->shiftUpdates, (PetscReal)c->exchanges, (PetscReal)c->received, (PetscReal)c->rebuilds, (PetscReal)c->stats.augmentations, (PetscReal)c->centreSet, c->centre[0], c->centre[1], c->centre[2], (PetscReal)c->exchangeTime, s->fscale, (PetscReal)a->streak, (PetscReal)c->capRetries, (PetscReal)s->reorthogonalise, a->loadBefore, (PetscReal)c->havePrev, (PetscReal)c->predictions, (PetscReal)c->jumpWaits};
+  PetscReal v[NCOUNT] = {a->loadReached, *inc, (PetscReal)a->stepsDone, (PetscReal)a->cutbacks, (PetscReal)s->newtonTotal, (PetscReal)s->linearTotal, (PetscReal)s->funcTotal, (PetscReal)c->evaluations, (PetscReal)c->stepLimits, (PetscReal)c->shiftUpdates, (PetscReal)c->exchanges, (PetscReal)c->received, (PetscReal)c->rebuilds, (PetscReal)c->stats.augmentations, (PetscReal)c->centreSet, c->centre[0], c->centre[1], c->centre[2], (PetscReal)c->exchangeTime, s->fscale, (PetscReal)a->streak, (PetscReal)c->capRetries, (PetscReal)s->reorthogonalise, a->loadBefore, (PetscReal)c->havePrev, (PetscReal)c->predictions, (PetscReal)c->jumpWaits, (PetscReal)s->directStep};
 
   if (pack) {
     for (PetscInt k = 0; k < NCOUNT; ++k) b[k] = v[k];
@@ -56,10 +57,11 @@ static void Counters(PetscBool pack, SPApp a, PetscReal *inc, PetscReal b[])
   c->havePrev        = b[24] != 0.0 ? PETSC_TRUE : PETSC_FALSE;
   c->predictions     = (PetscInt)b[25];
   c->jumpWaits       = (PetscInt)b[26]; /* shift updates held back after a stick/slip jump */
+  s->directStep      = (PetscInt)b[27]; /* the switch to LU (applied by LoadCounters; 0: none) */
 }
 
 /* The run's identity, as attributes of /restart: written with the first step, compared on restart */
-#define FORMAT 6 /* 1: vectors in the partition's order (same rank count only); 2: partition-free; 3: + the growth streak; 4: + the recoveries (step-cap retries, GMRES re-orthogonalisation); 5: + the stuck points' predictor (the step before the last); 6: + the stick/slip jump waits */
+#define FORMAT 7 /* 1: vectors in the partition's order (same rank count only); 2: partition-free; 3: + the growth streak; 4: + the recoveries (step-cap retries, GMRES re-orthogonalisation); 5: + the stuck points' predictor (the step before the last); 6: + the stick/slip jump waits; 7: + the direct solver's step (6 is read too) */
 
 typedef struct {
   PetscInt dim, dofs, points, ranks, friction, loadSteps;
@@ -276,7 +278,7 @@ static PetscErrorCode CheckFile(SPApp a)
 }
 
 /* The file's run against this one: one line per mismatch. *ranks: the writing run's rank count */
-static PetscErrorCode CheckIdentity(SPApp a, PetscViewer h5, PetscInt *steps, PetscInt *ranks)
+static PetscErrorCode CheckIdentity(SPApp a, PetscViewer h5, PetscInt *steps, PetscInt *ranks, PetscInt *ncount)
 {
   Identity  id;
   PetscBool has;
@@ -291,7 +293,8 @@ static PetscErrorCode CheckIdentity(SPApp a, PetscViewer h5, PetscInt *steps, Pe
   {
     PetscInt format;
     PetscCall(PetscViewerHDF5ReadAttribute(h5, "/restart", "format", PETSC_INT, NULL, &format));
-    PetscCheck(format == FORMAT, a->comm, PETSC_ERR_USER_INPUT, "-restart %s: restart data format %" PetscInt_FMT " of another spcontact version (this one reads %d); resume it with that version", a->restartFile, format, FORMAT);
+    PetscCheck(format == FORMAT || format == 6, a->comm, PETSC_ERR_USER_INPUT, "-restart %s: restart data format %" PetscInt_FMT " of another spcontact version (this one reads 6 and %d); resume it with that version", a->restartFile, format, FORMAT);
+    *ncount = format == 6 ? NCOUNT6 : NCOUNT;
   }
   PetscCall(PetscViewerHDF5ReadAttribute(h5, "/restart", "ranks", PETSC_INT, NULL, ranks));
   PetscCall(GetIdentity(a, &id));
@@ -315,20 +318,20 @@ static PetscErrorCode CheckIdentity(SPApp a, PetscViewer h5, PetscInt *steps, Pe
 
 /* The counters of the writing run's rank r: its own rank's if the rank count is the same, else
    rank 0's (the same on every rank but the exchange statistics: rank 0 takes their total) */
-static PetscErrorCode LoadCounters(SPApp a, PetscViewer h5, PetscInt ranks, PetscReal *inc)
+static PetscErrorCode LoadCounters(SPApp a, PetscViewer h5, PetscInt ranks, PetscInt ncount, PetscReal *inc)
 {
   Vec          v, all;
   VecScatter   sc;
   PetscMPIInt  size, rank;
   PetscScalar *x;
-  PetscReal    b[NCOUNT];
+  PetscReal    b[NCOUNT] = {0};
 
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_size(a->comm, &size));
   PetscCallMPI(MPI_Comm_rank(a->comm, &rank));
   PetscCall(VecCreate(a->comm, &v));
-  PetscCall(VecSetSizes(v, PETSC_DECIDE, ranks * NCOUNT));
-  PetscCall(VecSetBlockSize(v, NCOUNT));
+  PetscCall(VecSetSizes(v, PETSC_DECIDE, ranks * ncount));
+  PetscCall(VecSetBlockSize(v, ncount));
   PetscCall(VecSetType(v, VECSTANDARD));
   PetscCall(PetscObjectSetName((PetscObject)v, "counters"));
   PetscCall(VecLoad(v, h5));
@@ -338,15 +341,16 @@ static PetscErrorCode LoadCounters(SPApp a, PetscViewer h5, PetscInt ranks, Pets
   PetscCall(VecGetArray(all, &x));
   {
     const PetscInt r = ranks == size ? rank : 0;
-    for (PetscInt k = 0; k < NCOUNT; ++k) b[k] = PetscRealPart(x[r * NCOUNT + k]);
+    for (PetscInt k = 0; k < ncount; ++k) b[k] = PetscRealPart(x[r * ncount + k]);
     if (ranks != size) { /* received facets (11) summed, exchange time (18) the slowest rank's */
       b[11] = b[18] = 0.0;
-      for (PetscInt q = 0; q < ranks && !rank; ++q) b[11] += PetscRealPart(x[q * NCOUNT + 11]), b[18] = PetscMax(b[18], PetscRealPart(x[q * NCOUNT + 18]));
+      for (PetscInt q = 0; q < ranks && !rank; ++q) b[11] += PetscRealPart(x[q * ncount + 11]), b[18] = PetscMax(b[18], PetscRealPart(x[q * ncount + 18]));
     }
   }
   PetscCall(VecRestoreArray(all, &x));
   Counters(PETSC_FALSE, a, inc, b);
   if (a->solver->reorthogonalise) PetscCall(SPSolverReorthogonalise(a->solver));
+  PetscCall(SPSolverResumeDirect(a->solver, a->solver->directStep));
   PetscCall(VecScatterDestroy(&sc));
   PetscCall(VecDestroy(&all));
   PetscCall(VecDestroy(&v));
@@ -357,7 +361,7 @@ static PetscErrorCode LoadCounters(SPApp a, PetscViewer h5, PetscInt ranks, Pets
 PetscErrorCode SPRestartLoad(SPApp a)
 {
   PetscViewer h5;
-  PetscInt    steps = 0, ranks = 0;
+  PetscInt    steps = 0, ranks = 0, ncount = NCOUNT;
   PetscReal   inc, *vals;
   PetscBool   same = PETSC_TRUE, all;
   DofItems    dofs;
@@ -367,7 +371,7 @@ PetscErrorCode SPRestartLoad(SPApp a)
   if (!a->restartFile[0]) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(CheckFile(a));
   PetscCall(PetscViewerHDF5Open(a->comm, a->restartFile, FILE_MODE_READ, &h5));
-  PetscCall(CheckIdentity(a, h5, &steps, &ranks));
+  PetscCall(CheckIdentity(a, h5, &steps, &ranks, &ncount));
   PetscCall(PetscViewerHDF5PushTimestepping(h5));
   PetscCall(PetscViewerHDF5SetTimestep(h5, steps - 1));
   PetscCall(PetscViewerHDF5PushGroup(h5, "/restart"));
@@ -385,7 +389,7 @@ PetscErrorCode SPRestartLoad(SPApp a)
   PetscCall(SPNaturalDestroy(&pts));
   PetscCallMPI(MPI_Allreduce(&same, &all, 1, MPIU_BOOL, MPI_LAND, a->comm));
   PetscCheck(all, a->comm, PETSC_ERR_USER_INPUT, "-restart %s: the contact points lie elsewhere there, or their friction anchors do not exist here (another mesh); restart with the interrupted run's mesh and options", a->restartFile);
-  PetscCall(LoadCounters(a, h5, ranks, &inc));
+  PetscCall(LoadCounters(a, h5, ranks, ncount, &inc));
   PetscCall(PetscViewerHDF5PopGroup(h5));
   PetscCall(PetscViewerHDF5PopTimestepping(h5));
   PetscCall(PetscViewerDestroy(&h5));

@@ -10,8 +10,8 @@
    takes F2 at alpha 100 from 22.6 to 10.7 s, and leaves every run at alpha 10 iterative. Not in
    3D, where a factorization with Debian's reference BLAS costs far more than the iterations it
    saves (B3, 15887 dofs: 20 s against 2.5 s), and not when the user chose the solver (-ksp_type
-   or -pc_type). The factorization is reused with the Jacobian (Jacobian reuse). A restart starts
-   with the iterative solver again. */
+   or -pc_type). The factorization is reused with the Jacobian (Jacobian reuse). A restart resumes
+   with the solver of the interrupted run (the switch's step is in the restart data). */
 #include <spcontact-impl.h>
 
 /* After SNESSetFromOptions: whether this run may switch (2D, the solver not the user's, a
@@ -35,25 +35,49 @@ PetscErrorCode SPSolverSetUpDirect(SPSolver s)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* The switch itself; why: what the last solve did, for the one-line message */
-static PetscErrorCode SwitchToDirect(SPSolver s, const char *why)
+/* The solver from here on: preonly + LU (MUMPS, else PETSc's own on one process) */
+static PetscErrorCode SetDirect(SPSolver s)
 {
   KSP       ksp;
   PC        pc;
   PetscBool mumps;
-  KSPType   ktype;
 
   PetscFunctionBeginUser;
   PetscCall(SNESGetKSP(s->snes, &ksp));
-  PetscCall(KSPGetType(ksp, &ktype));
-  PetscCall(PetscPrintf(PetscObjectComm((PetscObject)s->dm), "linear solver: %s %s (2D): from here on a sparse direct solver (LU); -solver_direct_switch 0 keeps the iterative one\n", ktype, why));
   PetscCall(MatGetFactorAvailable(s->J, MATSOLVERMUMPS, MAT_FACTOR_LU, &mumps));
   PetscCall(KSPSetType(ksp, KSPPREONLY));
   PetscCall(KSPGetPC(ksp, &pc));
   PetscCall(PCSetType(pc, PCLU));
   PetscCall(PCFactorSetMatSolverType(pc, mumps ? MATSOLVERMUMPS : MATSOLVERPETSC));
   s->directAllowed = PETSC_FALSE;
-  s->directStep    = s->step;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The switch itself; why: what the last solve did, for the one-line message */
+static PetscErrorCode SwitchToDirect(SPSolver s, const char *why)
+{
+  KSP     ksp;
+  KSPType ktype;
+
+  PetscFunctionBeginUser;
+  PetscCall(SNESGetKSP(s->snes, &ksp));
+  PetscCall(KSPGetType(ksp, &ktype));
+  PetscCall(PetscPrintf(PetscObjectComm((PetscObject)s->dm), "linear solver: %s %s (2D): from here on a sparse direct solver (LU); -solver_direct_switch 0 keeps the iterative one\n", ktype, why));
+  PetscCall(SetDirect(s));
+  s->directStep = s->step;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* A restart of a run that had switched in load step `step` (0: it had not): the same solver
+   again, unless this run may not switch (-solver_direct_switch 0, the user's -ksp_type/-pc_type) */
+PetscErrorCode SPSolverResumeDirect(SPSolver s, PetscInt step)
+{
+  PetscFunctionBeginUser;
+  s->directStep = 0;
+  if (step <= 0 || !s->directAllowed) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(PetscPrintf(PetscObjectComm((PetscObject)s->dm), "linear solver: the sparse direct solver (LU) of the interrupted run, from its load step %" PetscInt_FMT "; -solver_direct_switch 0 keeps the iterative one\n", step));
+  PetscCall(SetDirect(s));
+  s->directStep = step;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -79,6 +79,17 @@ test_restart_after_step_cap_recovery() {
   assert_eq recovery_in_first_half "$(grep -c '^Newton did not converge: the load step again' "$CASE_DIR/half.txt")" 1 || return 1
   assert_eq no_recovery_after_restart "$(grep -c '^Newton did not converge' "$CASE_DIR/rest.txt")" 0
 }
+# A 2D run that switched to the sparse direct solver (-solver_direct_switch 1: at its first solve)
+# resumes with it: one line names the interrupted run's step, the summary key keeps it, and the
+# restarted steps take the Newton iterations of the uninterrupted run (they are LU solves there too)
+test_restart_direct_solver() {
+  rs_case 1 -options_file input/hertz2d.opts -solver_direct_switch 1 || return 1
+  local rc=0
+  assert_eq switched_in_first_half "$(grep -c '^linear solver: cg took' "$CASE_DIR/half.txt")" 1 || rc=1
+  assert_eq resumed_line "$(grep -c '^linear solver: the sparse direct solver (LU) of the interrupted run, from its load step 1;' "$CASE_DIR/rest.txt")" 1 || rc=1
+  assert_eq "direct_solver_from_step (full, restarted)" "$(sval "$CASE_DIR/full.txt" direct_solver_from_step) $(sval "$CASE_DIR/rest.txt" direct_solver_from_step)" "1 1" || rc=1
+  return $rc
+}
 test_restart_b2_shifted_np2()     { rs_case 2 -options_file input/hertz2d.opts -contact_method shifted; }
 test_restart_friction_alm()       { rs_case 1 -options_file input/friction_block2d.opts -contact_method alm; }
 test_restart_friction_predicted()  { rs_case 2 -options_file input/friction_block2d.opts -contact_method shifted; } # every shear step starts from predicted shifts
