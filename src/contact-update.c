@@ -332,7 +332,7 @@ PetscErrorCode SPContactLimitStep(SPContact c, Vec X, Vec Y, Vec W, PetscBool *c
    every retry stalled again (15 iterations each) and the run reached load 0.966 with 4 cut-backs
    and 12 minutes where the default finishes with 3 cut-backs in 5; F3 at alpha 1000 retried and cut
    back alike in its normal step. There a tighter cap for the whole run (-contact_step_cap 0.1)
-   converges (README, F3). With the jump wait (SPFrictionJumped) F2's retried normal step took 50
+   converges (doc/friction-benchmarks.md, F3). With the jump wait (SPFrictionJumped) F2's retried normal step took 50
    iterations and no cut-back, but its last shear step stalled again (52 iterations at load 0.95):
    no better than the wait alone (164). */
 PetscErrorCode SPContactTightenStepCap(SPContact c, PetscBool *retry)

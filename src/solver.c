@@ -416,7 +416,7 @@ static PetscErrorCode ResidualTarget(SPSolver s, PetscReal *target)
    adds lies below what the next residual evaluation and every convergence test can see. eta =
    max(-ksp_rtol, min(-solver_inexact_rtol, 0.01 target/|F|)): -ksp_rtol while |F| is large, looser
    only near the target. F2 (shifted, alpha 10): 5363 -> 3982 GMRES iterations, the same 109 Newton
-   iterations, stick zone and force (README "Solver strategy"). */
+   iterations, stick zone and force (doc/performance.md, "Solver strategy"). */
 static PetscErrorCode TargetFloor(SPSolver s, PetscReal fnorm)
 {
   PetscReal target;

@@ -23,7 +23,7 @@ cmabs() { awk -v k="$2" '$1 == k { v = $2 + 0; printf "%.10g\n", v < 0 ? -v : v 
 # (Q = 0.5 mu P; measured +0.10 and 1.3e-8 elements, -0.40 and -0.50 before the branch hold); shifted creep <= 1e-10 h (h = 0.005); contact
 # forces balance the loads (Q, P) to 1e-8; the same figures on 1, 2 and 3 ranks (1e-8). The traction
 # L2 error is 10.1 % against friction.md's 5 %: asserted only as a regression bound (10.5 %), the
-# target is missed (README, F2). Before points closing in a step were kept frictionless until the
+# target is missed (doc/friction-benchmarks.md, F2). Before points closing in a step were kept frictionless until the
 # commit (contact-friction.c, fresh points) the centre was -2.5 elements and the L2 error 22 %.
 test_cattaneo2d_f2_shifted() {
   local rc=0
@@ -47,7 +47,7 @@ test_cattaneo2d_f2_shifted() {
 # in 30 steps, then the slide in 10), against CM at the measured P and Q (Q/(mu P) = 0.524): stick
 # zone centred (1e-8 elements) and its half-width within one element of c; 1 and 2 ranks identical
 # to 1e-8. The traction L2 error is 6.1 %, against friction.md's 5 %: asserted only as a regression
-# bound (6.5 %), the 5 % target is missed (README, F2).
+# bound (6.5 %), the 5 % target is missed (doc/friction-benchmarks.md, F2).
 test_cattaneo2d_f2_rigid_edge() {
   local rc=0 np
   for np in 1 2; do
@@ -185,7 +185,7 @@ test_cattaneo2d_alpha1000_jump_wait() {
   return $rc
 }
 
-# F3 at alpha 1000 with the default step cap: the normal step cycles between active sets (README,
+# F3 at alpha 1000 with the default step cap: the normal step cycles between active sets (doc/friction-benchmarks.md,
 # F3). With friction no load step is solved again with a tighter cap by itself, so the stall
 # message names -contact_step_cap (F3 converges with 0.1); the run stops with exit 2 and leaves
 # only .part files. One step, no cut-back, the stall after 8 iterations: about 40 s on 2 ranks.
