@@ -141,7 +141,7 @@ PETSC_EXTERN PetscErrorCode SPSolverDestroy(SPSolver *);
 
 /* loading.c */
 PETSC_EXTERN PetscErrorCode SPLoadingRun(SPApp);
-PETSC_EXTERN PetscErrorCode SPLogProgress(SPApp, PetscInt, PetscReal, PetscInt, PetscInt);
+PETSC_EXTERN PetscErrorCode SPLogProgress(SPApp, PetscInt, PetscInt, PetscReal, PetscInt, PetscInt);
 
 /* output.c */
 PETSC_EXTERN PetscErrorCode SPOutputCreate(DM, SPOutput *);

@@ -144,10 +144,10 @@ PetscErrorCode SPLoadingRun(SPApp app)
       PetscCall(SPOutputWriteStep(app->output, app->problem, app->u, app->contact));
       PetscCall(PetscLogStagePop());
       PetscCall(SPContactReportStep(app->contact, app->u, step, load));
-      PetscCall(SPLogProgress(app, step, load, its0, lits0));
+      PetscCall(SPLogProgress(app, step, step + (PetscInt)PetscCeilReal((1.0 - done) / inc - 1e-6), load, its0, lits0));
       PetscCall(SPSolverGetCounts(app->solver, &its0, &lits0, NULL));
       app->stepsDone = step, app->loadReached = done;
-      PetscCall(Regrow(app, &inc));
+      if (done < 1.0 - 1e-12) PetscCall(Regrow(app, &inc)); /* not after the last step */
       PetscCall(SPRestartWriteStep(app, inc));
       PetscCall(Interrupted(app, &halt));
       if (halt) break;

@@ -23,11 +23,12 @@ PetscErrorCode SPLogRegister(SPLog *log)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* One line on stdout per converged load step (silenced by -quiet): step k/N (N the requested
-   number of steps; cut-backs add steps), load factor, Newton and linear iterations of the step
+/* One line on stdout per converged load step (silenced by -quiet): step k/N (N the number of
+   steps the run needs at the current increment: -load_steps until a cut-back, then more, fewer
+   again as the increment grows back), load factor, Newton and linear iterations of the step
    (its0/lits0: the solver's totals before it), active points and max penetration of the last
    Newton iterate, wall time since start. */
-PetscErrorCode SPLogProgress(SPApp app, PetscInt step, PetscReal load, PetscInt its0, PetscInt lits0)
+PetscErrorCode SPLogProgress(SPApp app, PetscInt step, PetscInt total, PetscReal load, PetscInt its0, PetscInt lits0)
 {
   SPContactStats st = {0};
   PetscInt       its, lits;
@@ -40,6 +41,6 @@ PetscErrorCode SPLogProgress(SPApp app, PetscInt step, PetscReal load, PetscInt 
   PetscCall(SPContactIsActive(app->contact, &on));
   if (on) PetscCall(SPContactGetIterationStats(app->contact, &st));
   PetscCall(PetscTime(&t));
-  PetscCall(PetscPrintf(app->comm, "step %" PetscInt_FMT "/%" PetscInt_FMT " load %.6f newton %" PetscInt_FMT " linear %" PetscInt_FMT " active %" PetscInt_FMT " max_penetration %.3e wall %.2fs\n", step, app->loadSteps, (double)load, its - its0, lits - lits0, st.activePoints, (double)st.maxPenetration, (double)(t - app->t0)));
+  PetscCall(PetscPrintf(app->comm, "step %" PetscInt_FMT "/%" PetscInt_FMT " load %.6f newton %" PetscInt_FMT " linear %" PetscInt_FMT " active %" PetscInt_FMT " max_penetration %.3e wall %.2fs\n", step, total, (double)load, its - its0, lits - lits0, st.activePoints, (double)st.maxPenetration, (double)(t - app->t0)));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
