@@ -17,7 +17,11 @@ Usage: cattaneo_check.py CONTACT_CSV MODE [Q_ratio [P]]   (P: the normal force, 
 The stick zone: the contiguous run of stick points (status 1) around the centre of the contact
 (the midpoint of the points carrying pressure), from the slave points (reference x; y < 0.05).
 Prints: key value lines (stick_left, stick_right, stick_half_width, stick_centre, c_exact,
-half_width_error, half_width_error_elements, centre_error_elements, traction_l2_error, h).
+half_width_error, half_width_error_elements, centre_error_elements, traction_l2_error, h). 2D also:
+traction_l2_stick_part and traction_l2_slip_part (the error of the stick and of the slip points, so
+that their squares add up to the whole), traction_l2_of_pressure_error (mu (p - p_Hertz) in the same
+norm: what the normal pressure's error alone brings into t = mu p) and pressure_l2_error (against
+Hertz, relative to it).
 The traction is the recovered tangential traction tx on the slave (opposite to the load on the
 upper body, so the sign is flipped), compared on the points with pressure, L2 relative to the
 exact profile (trapezoid rule over the slave points)."""
@@ -111,17 +115,29 @@ def main():
             return v
     half = 0.5 * (right - left)
     num = den = 0.0
+    part = dict(stick=0.0, slip=0.0, pressure=0.0)  # squared parts of num; pressure: mu (p - p_Hertz)
+    pnum = pden = 0.0
     for i in range(len(x) - 1):
         w = x[i + 1] - x[i]
         for j in (i, i + 1):
             if abs(x[j]) > 1.2 * b: continue
-            num += 0.5 * w * (tx[j] - q(x[j])) ** 2
+            e2 = 0.5 * w * (tx[j] - q(x[j])) ** 2
+            ph = p0 * math.sqrt(max(0.0, 1 - x[j] * x[j] / (b * b)))
+            num += e2
             den += 0.5 * w * q(x[j]) ** 2
+            if st[j] == 1: part["stick"] += e2
+            if st[j] == 2: part["slip"] += e2
+            part["pressure"] += 0.5 * w * (mu * (pr[j] - ph)) ** 2
+            pnum += 0.5 * w * (pr[j] - ph) ** 2
+            pden += 0.5 * w * ph * ph
     out = dict(b=b, p0=p0, stick_left=left, stick_right=right, stick_half_width=half,
                stick_centre=0.5 * (left + right), ref_half_width=ref_half, h=h,
                half_width_error=half - ref_half, half_width_error_elements=(half - ref_half) / h,
                centre_error_elements=0.5 * (left + right) / h, traction_l2_error=math.sqrt(num / den),
-               stick_points=hi - lo + 1)
+               traction_l2_stick_part=math.sqrt(part["stick"] / den),
+               traction_l2_slip_part=math.sqrt(part["slip"] / den),
+               traction_l2_of_pressure_error=math.sqrt(part["pressure"] / den),
+               pressure_l2_error=math.sqrt(pnum / pden), stick_points=hi - lo + 1)
     for k, v in out.items():
         print(k, "%.10g" % v if isinstance(v, float) else v)
 
