@@ -189,11 +189,11 @@ PetscErrorCode SPContactSetFromOptions(SPContact c)
   PetscCheck(c->alphaT > 0.0, comm, PETSC_ERR_USER_INPUT, "-contact_friction_alpha %g: the tangential penalty factor must be positive", (double)c->alphaT);
   PetscCheck(c->alphaT >= 1e-3 && c->alphaT <= 1e8, comm, PETSC_ERR_USER_INPUT, "-contact_friction_alpha %g: outside 1e-3..1e8 (eps_T h / E)", (double)c->alphaT);
   PetscCheck(c->jumpWait == 0.0 || (c->jumpWait >= 1.0 && !PetscIsInfOrNanReal(c->jumpWait)), comm, PETSC_ERR_USER_INPUT, "-contact_friction_jump_wait %g: must be 0 (off) or a growth factor >= 1", (double)c->jumpWait);
-  PetscCheck(c->creepRtol > 0.0 && c->slipRtol > 0.0, comm, PETSC_ERR_USER_INPUT, "-contact_friction_creep_rtol %g, -contact_friction_slip_rtol %g: must be positive", (double)c->creepRtol, (double)c->slipRtol);
+  PetscCheck(c->creepRtol > 0.0 && c->slipRtol > 0.0 && !PetscIsInfOrNanReal(c->creepRtol) && !PetscIsInfOrNanReal(c->slipRtol), comm, PETSC_ERR_USER_INPUT, "-contact_friction_creep_rtol %g, -contact_friction_slip_rtol %g: must be positive finite numbers", (double)c->creepRtol, (double)c->slipRtol);
   PetscCheck(!setPenalty || (c->penalty > 0.0 && !PetscIsInfOrNanReal(c->penalty)), comm, PETSC_ERR_USER_INPUT, "-contact_penalty %g: the penalty must be a positive number", (double)c->penalty);
-  PetscCheck(!c->gapTolSet || c->gapTol > 0.0, comm, PETSC_ERR_USER_INPUT, "-contact_gap_tol %g: must be positive", (double)c->gapTol);
+  PetscCheck(!c->gapTolSet || (c->gapTol > 0.0 && !PetscIsInfOrNanReal(c->gapTol)), comm, PETSC_ERR_USER_INPUT, "-contact_gap_tol %g: must be a positive finite length", (double)c->gapTol);
   PetscCheck(c->gapRtol > 0.0 && c->gapRtol < 1.0, comm, PETSC_ERR_USER_INPUT, "-contact_gap_rtol %g: must be in (0, 1) (a fraction of the contact facet size)", (double)c->gapRtol);
-  PetscCheck(c->stepCap >= 0.0, comm, PETSC_ERR_USER_INPUT, "-contact_step_cap %g: must be >= 0 (0 disables the step control)", (double)c->stepCap);
+  PetscCheck(c->stepCap >= 0.0 && !PetscIsInfOrNanReal(c->stepCap), comm, PETSC_ERR_USER_INPUT, "-contact_step_cap %g: must be a finite number >= 0 (0 disables the step control)", (double)c->stepCap);
   for (c->nob = 0; c->nob < SP_MAX_OBSTACLES; ++c->nob) {
     char      name[48];
     PetscBool has;

@@ -19,10 +19,12 @@ static void SingletonMPI(void)
   (void)setenv("OMPI_MCA_ess_singleton_isolated", "1", 0);
 }
 
-/* The errors reported in one line: bad input, and a failed write of an output file (output-guard.c) */
+/* The errors reported in one line: bad input (an unknown type is a misspelt PETSc option such as
+   -ksp_type: every type the code sets itself exists), and a failed write of an output file
+   (output-guard.c) */
 static int OneLine(PetscErrorCode n)
 {
-  return n == PETSC_ERR_USER_INPUT || n == PETSC_ERR_USER || n == PETSC_ERR_ARG_OUTOFRANGE || n == PETSC_ERR_ARG_WRONG || n == PETSC_ERR_FILE_WRITE;
+  return n == PETSC_ERR_USER_INPUT || n == PETSC_ERR_USER || n == PETSC_ERR_ARG_OUTOFRANGE || n == PETSC_ERR_ARG_WRONG || n == PETSC_ERR_ARG_UNKNOWN_TYPE || n == PETSC_ERR_FILE_WRITE;
 }
 
 /* User-input errors print one line on rank 0 (no PETSc traceback); everything else keeps
@@ -33,7 +35,7 @@ static PetscErrorCode ErrorHandler(MPI_Comm comm, int line, const char *fun, con
   if (p != PETSC_ERROR_INITIAL) return n;
   if (OneLine(n) && !getenv("SPCONTACT_TRACEBACK")) {
     MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
-    if (rank == 0) fprintf(stderr, "spcontact: error: %s\n", mess ? mess : "(no message)");
+    if (rank == 0) fprintf(stderr, "spcontact: error: %s%s\n", mess ? mess : "(no message)", n == PETSC_ERR_ARG_UNKNOWN_TYPE ? "; check the option's spelling (-help lists the types)" : "");
     return n;
   }
   return PetscTraceBackErrorHandler(comm, line, fun, file, n, p, mess, ctx);

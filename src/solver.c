@@ -782,10 +782,14 @@ PetscErrorCode SPSolverSetFromOptions(SPSolver s)
   PetscCall(SPSolverSetUpAccept(s));
   PetscCall(SPSolverSetUpDirect(s));
   {
-    KSP ksp;
+    KSP      ksp;
+    PetscInt maxit, kmaxit;
     PetscCall(SNESGetKSP(s->snes, &ksp));
-    PetscCall(KSPGetTolerances(ksp, &s->rtolMin, NULL, NULL, NULL));
+    PetscCall(KSPGetTolerances(ksp, &s->rtolMin, NULL, NULL, &kmaxit));
     s->rtolMax = PetscMax(s->rtolMax, s->rtolMin);
+    PetscCall(SNESGetTolerances(s->snes, NULL, NULL, NULL, &maxit, NULL));
+    PetscCheck(maxit >= 1, PetscObjectComm((PetscObject)s->dm), PETSC_ERR_USER_INPUT, "-snes_max_it %" PetscInt_FMT ": a load step needs at least 1 Newton iteration", maxit);
+    PetscCheck(kmaxit >= 1, PetscObjectComm((PetscObject)s->dm), PETSC_ERR_USER_INPUT, "-ksp_max_it %" PetscInt_FMT ": a linear solve needs at least 1 iteration", kmaxit);
   }
   PetscCall(SPContactIsActive(s->contact, &on));
   if (on) {

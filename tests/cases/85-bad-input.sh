@@ -90,6 +90,17 @@ inverted hexahedra (3D box bounds reversed)|input/block3d.opts|-dm_plex_box_lowe
 flat hexahedra (zero box height)|input/block3d.opts|-dm_plex_box_upper 1,1,0
 manufactured solution with contact|input/hertz2d.opts|-material_mms 0.01
 augmentation budget zero|input/hertz2d.opts|-contact_method alm -contact_alm_max 0
+unknown Krylov method (PETSc option misspelt)|input/hertz2d.opts|-ksp_type nonsense
+unknown preconditioner|input/hertz2d.opts|-pc_type nonsense
+unknown line search|input/hertz2d.opts|-snes_linesearch_type nonsense
+no Newton iteration allowed|input/hertz2d.opts|-snes_max_it 0
+negative Newton iteration limit|input/hertz2d.opts|-snes_max_it -1
+no linear iteration allowed|input/hertz2d.opts|-ksp_max_it 0
+Young's modulus infinite|input/hertz2d.opts|-material_E inf
+region Young's modulus infinite|input/bimaterial2d.opts|-material_1_E inf
+gap tolerance infinite|input/hertz2d.opts|-contact_gap_tol inf
+step cap infinite|input/hertz2d.opts|-contact_step_cap inf
+creep tolerance infinite|input/friction_block2d.opts|-contact_friction_creep_rtol inf
 CASES
 }
 
@@ -108,6 +119,7 @@ test_bad_input_catalogue_np2() {
 contact value without points|-contact_values 99
 3D point on a 2D mesh|-contact_obstacle_0_point 0,0,0
 penalty 1e300|-contact_penalty 1e300
+unknown Krylov method|-ksp_type nonsense
 options file missing|-options_file /nonexistent.opts
 options file naming a missing options file|-options_file $CASE_DIR/outer.opts
 mesh file not a mesh|-mesh_file input/hertz2d.opts
