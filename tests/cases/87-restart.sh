@@ -81,9 +81,12 @@ test_restart_after_step_cap_recovery() {
 }
 # A 2D run that switched to the sparse direct solver (-solver_direct_switch 1: at its first solve)
 # resumes with it: one line names the interrupted run's step, the summary key keeps it, and the
-# restarted steps take the Newton iterations of the uninterrupted run (they are LU solves there too)
-test_restart_direct_solver() {
-  rs_case 1 -options_file input/hertz2d.opts -solver_direct_switch 1 || return 1
+# restarted steps take the Newton iterations of the uninterrupted run (they are LU solves there
+# too); on 1 rank, and interrupted on 2 ranks and resumed on 3 (MUMPS)
+test_restart_direct_solver()     { rs_direct 1; }
+test_restart_direct_solver_2to3() { RS_NP=3 rs_direct 2; }
+rs_direct() {
+  rs_case "$1" -options_file input/hertz2d.opts -solver_direct_switch 1 || return 1
   local rc=0
   assert_eq switched_in_first_half "$(grep -c '^linear solver: cg took' "$CASE_DIR/half.txt")" 1 || rc=1
   assert_eq resumed_line "$(grep -c '^linear solver: the sparse direct solver (LU) of the interrupted run, from its load step 1;' "$CASE_DIR/rest.txt")" 1 || rc=1
