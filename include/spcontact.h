@@ -160,6 +160,7 @@ int SPCheckOptionsFiles(int, char **);
 /* option-defaults.c: spcontact's defaults for PETSc options, set where the user gave none */
 PETSC_EXTERN PetscErrorCode SPOptionsSetDefault(const char[], const char[]);
 PETSC_EXTERN PetscErrorCode SPOptionsIsDefault(const char[], PetscBool *);
+PETSC_EXTERN PetscErrorCode SPOptionsCheckValues(MPI_Comm);
 PETSC_EXTERN PetscBool      SPOptionsNameAt(const char[], size_t, const char[]);
 
 /* app.c */

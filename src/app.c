@@ -72,6 +72,7 @@ PetscErrorCode SPAppSetUp(SPApp a)
   PetscCall(CheckCombination(a));
   PetscCall(SPSolverCreate(a->dm, a->problem, a->contact, &a->log, &a->solver));
   PetscCall(SPSolverSetFromOptions(a->solver));
+  PetscCall(SPOptionsCheckValues(a->comm)); /* every option of the set-up read: none lost its value */
   PetscCall(DMCreateGlobalVector(a->dm, &a->u));
   PetscCall(PetscObjectSetName((PetscObject)a->u, "displacement"));
   PetscCall(VecSet(a->u, 0.0));

@@ -101,6 +101,9 @@ region Young's modulus infinite|input/bimaterial2d.opts|-material_1_E inf
 gap tolerance infinite|input/hertz2d.opts|-contact_gap_tol inf
 step cap infinite|input/hertz2d.opts|-contact_step_cap inf
 creep tolerance infinite|input/friction_block2d.opts|-contact_friction_creep_rtol inf
+number option without its value (another option follows)|input/hertz2d.opts|-load_steps -quiet
+word option without its value (last on the line)|input/hertz2d.opts|-contact_method
+indexed option without its value|input/hertz2d.opts|-contact_obstacle_0_mu
 CASES
 }
 

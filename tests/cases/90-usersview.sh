@@ -53,6 +53,11 @@ test_help_complete() {
   for fam in -bc_0_type -contact_obstacle_0_type -contact_pair_0_slave_values -material_0_E; do
     grep -qE "^ *${fam}[ :]" "$CASE_DIR/help.txt" && echo "family $fam listed ok" || { echo "family $fam FAILED"; missing=1; }
   done
+  # src/options-values.c refuses spcontact's options given without a value, except its flags:
+  # its list must hold every PetscOptionsBool name read in src/ (an indexed one by its tail)
+  for o in $(grep -rhoE 'PetscOptionsBool\((NULL, *[A-Za-z"_]*, *|PetscOptionsObject, *)?"-[A-Za-z0-9_]+"' src/ | grep -oE '"-[A-Za-z0-9_]+"' | tr -d '"' | sort -u); do
+    grep -qE "\"($o|_${o#-})\"" src/options-values.c || { echo "flag $o not in src/options-values.c FAILED"; missing=1; }
+  done
   [ $missing -eq 0 ] && echo "every option in -help and README ok" || rc=1
   return $rc
 }
