@@ -254,7 +254,7 @@ struct _n_SPContact {
   PetscReal       jumpWait;   /* -contact_friction_jump_wait (contact-friction.c) */
   PetscInt        jumpWaits;  /* boundaries at which it held the shifts back */
   PetscInt        boundary;   /* Newton-iteration boundaries since the solve began */
-  PetscBool       branchHold, holding; /* -contact_branch_hold; the linearisation after an update holds the branches */
+  PetscBool       branchHold, holding, holdNext; /* -contact_branch_hold; the linearisation after an update holds the branches; holdNext: from the next solve's start (an augmentation) */
   PetscBool       predict, havePrev;   /* -contact_shift_predict; SPContactPoint.prev holds the step before the last */
   PetscReal       predictRatio;        /* pending prediction for the next solve (0: none), contact-predict.c */
   PetscInt        predictions;         /* load steps started from predicted tangential shifts */

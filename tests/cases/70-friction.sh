@@ -104,7 +104,7 @@ test_friction_slip_fixed_point() {
 # linearises each point on its branch before the update. F1b at alpha 10, 100 and 1000: the same
 # force T = mu N = 0.003 (1e-8) with and without it, and the seed's claim with it: fewer Newton
 # iterations than alm and at most 3 per load step more than penalty (11 steps; measured 53 / 41 /
-# 36 against alm 73 / 55 / 53 and penalty 27 / 29 / 28; without the hold 74 / 57 / 54). At alpha
+# 36 against alm 67 / 47 / 44 and penalty 27 / 29 / 28; without the hold 74 / 57 / 54). At alpha
 # 100 also on 2 and 3 ranks, with the same iteration count.
 test_friction_branch_hold() {
   local rc=0 a m name
