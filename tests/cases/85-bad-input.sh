@@ -123,6 +123,7 @@ contact value without points|-contact_values 99
 3D point on a 2D mesh|-contact_obstacle_0_point 0,0,0
 penalty 1e300|-contact_penalty 1e300
 unknown Krylov method|-ksp_type nonsense
+option without its value|-load_steps -quiet
 options file missing|-options_file /nonexistent.opts
 options file naming a missing options file|-options_file $CASE_DIR/outer.opts
 mesh file not a mesh|-mesh_file input/hertz2d.opts
