@@ -162,6 +162,7 @@ PETSC_EXTERN PetscErrorCode SPOptionsSetDefault(const char[], const char[]);
 PETSC_EXTERN PetscErrorCode SPOptionsIsDefault(const char[], PetscBool *);
 PETSC_EXTERN PetscErrorCode SPOptionsCheckValues(MPI_Comm);
 PETSC_EXTERN PetscBool      SPOptionsNameAt(const char[], size_t, const char[]);
+PETSC_EXTERN size_t         SPOptionsNameCopy(const char[], size_t, char[], size_t);
 
 /* app.c */
 PETSC_EXTERN PetscErrorCode SPAppCreate(MPI_Comm, SPApp *);

@@ -220,9 +220,10 @@ static PetscErrorCode UpdateShifts(SPContact c, PetscReal *maxDs)
    A boundary with an update is never a converged one (its gap error is above the tolerance), and
    the next boundary evaluates the laws unheld. alm holds in the first Newton step of the solve
    after an augmentation (SPContactSolveUpdate, SPContactBeginSolve): B4 32^3 12 -> 11 Newton
-   iterations, F1b 73 / 55 / 53 -> 67 / 47 / 44, F2 199 / 117 / 197 -> 196 / 109 / 191. Not with an accelerator (-contact_shift_accel
-   anderson, two-pass's default): B6 two-pass at alpha 10 took 369 Newton iterations and 2
-   cut-backs with the hold against 44 without, and 49 when held only where Anderson took no step. */
+   iterations, F1b 73 / 55 / 53 -> 67 / 47 / 44, F2 199 / 117 / 197 -> 196 / 109 / 191. Not with
+   an accelerator (-contact_shift_accel anderson, two-pass's default): B6 two-pass at alpha 10
+   took 369 Newton iterations and 2 cut-backs with the hold against 44 without, and 49 when held
+   only where Anderson took no step. */
 static void HoldBranches(SPContact c)
 {
   for (PetscInt i = 0; i < c->n; ++i) {

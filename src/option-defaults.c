@@ -21,6 +21,16 @@ PetscBool SPOptionsNameAt(const char all[], size_t i, const char key[])
   return key[j] ? PETSC_FALSE : PETSC_TRUE;
 }
 
+/* The option name that starts at all[i], copied into name (at most len - 1 characters); its length */
+size_t SPOptionsNameCopy(const char all[], size_t i, char name[], size_t len)
+{
+  size_t j = 0;
+
+  while (j < len - 1 && all[i + j] && all[i + j] != ' ') name[j] = all[i + j], j++;
+  name[j] = 0;
+  return j;
+}
+
 /* Whether the database holds option name (with its dash), without marking it used: a user's
    option must stay reportable as unused */
 static PetscErrorCode Given(const char name[], PetscBool *given)

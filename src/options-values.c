@@ -56,12 +56,12 @@ PetscErrorCode SPOptionsCheckValues(MPI_Comm comm)
   PetscFunctionBeginUser;
   PetscCall(PetscOptionsGetAll(NULL, &all));
   for (size_t i = 0; all[i]; ++i) {
-    size_t n = 0;
+    size_t n;
     if (!SPOptionsNameAt(all, i, "-") || !isalpha((unsigned char)all[i + 1])) continue;
-    while (all[i + n] && all[i + n] != ' ' && n < sizeof(name) - 1) name[n] = (char)tolower((unsigned char)all[i + n]), n++;
-    name[n] = 0;
+    n = SPOptionsNameCopy(all, i, name, sizeof(name));
+    for (size_t j = 0; j < n; ++j) name[j] = (char)tolower((unsigned char)name[j]); /* PETSc's names ignore case */
     PetscCall(CheckOne(comm, name));
-    i += n ? n - 1 : 0;
+    i += n - 1;
   }
   PetscCall(PetscFree(all));
   PetscFunctionReturn(PETSC_SUCCESS);

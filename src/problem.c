@@ -60,15 +60,14 @@ static PetscErrorCode RegionsGiven(MPI_Comm comm, PetscBool given[])
   for (PetscInt k = 0; k < SP_MAX_MATERIALS; ++k) given[k] = PETSC_FALSE;
   PetscCall(PetscOptionsGetAll(NULL, &all)); /* "-name value -name ..." */
   for (size_t i = 0; all[i]; ++i) {
-    size_t j, d;
+    size_t d;
     long   k = 0;
     if (!SPOptionsNameAt(all, i, key)) continue;
     for (d = i + n; isdigit((unsigned char)all[d]) && k < 1000000; ++d) k = 10 * k + (all[d] - '0');
     if (d == i + n || all[d] != '_') continue; /* not -material_<k>_ */
     if (k >= SP_MAX_MATERIALS) {
       char name[64];
-      for (j = 0; j < sizeof(name) - 1 && all[i + j] && all[i + j] != ' '; ++j) name[j] = all[i + j];
-      name[j] = 0;
+      (void)SPOptionsNameCopy(all, i, name, sizeof(name));
       PetscCall(PetscFree(all));
       SETERRQ(comm, PETSC_ERR_USER_INPUT, "%s: at most %d region materials (k = 0..%d)", name, SP_MAX_MATERIALS, SP_MAX_MATERIALS - 1);
     }
