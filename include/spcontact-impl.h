@@ -283,6 +283,7 @@ struct _n_SPContact {
   PetscInt        stepLimits;  /* Newton steps scaled by the step control (their trial iterate is evaluated too) */
   PetscReal       alphaMax;      /* the largest eps h / E at a contact point (the effective alpha) */
   PetscInt        activeVersion; /* moves when the active set (with friction: the stick/slip state) may have changed */
+  PetscInt        activeChanges; /* points whose active state changed, summed over every bookkeeping of the run */
   PetscInt        shiftUpdates; /* Newton-iteration boundaries and converged solves at which the shifts moved */
   PetscBool       centreSet;
   PetscReal       centre[3];
@@ -422,11 +423,20 @@ struct _n_SPSolver {
   PetscInt            directIts;     /* -solver_direct_switch: a 2D solve with more linear iterations switches to a factorization (solver-direct.c; 0: never) */
   PetscBool           directAllowed; /* this run may still switch */
   PetscInt            directStep;    /* the load step of the switch (0: none) */
+  PetscReal           pcLag;         /* -solver_pc_lag: a new Jacobian keeps the preconditioner while the changed points are at most this fraction of its active points (solver-pclag.c; 0: never) */
+  PetscBool           pcLagAllowed;  /* this run may keep it (frictionless, no pairs, linear bulk, not the user's lag) */
+  PetscInt            pcActive, pcChanges; /* active points and the run's active-state changes at the preconditioner's build (pcActive < 0: not built) */
+  PetscBool           pcFresh, pcKept, pcSpent; /* the next solve is the first with a new preconditioner; the current one serves a later Jacobian; it converged too slowly for that */
+  PetscReal           pcRate;        /* linear iterations per decade of residual in the first solve with the current preconditioner */
+  PetscInt            pcKeeps;       /* new Jacobians that kept the preconditioner, over the run (summary) */
 };
 
 PETSC_EXTERN PetscErrorCode SPSolverSetUpAccept(SPSolver);
 PETSC_EXTERN PetscErrorCode SPSolverSetUpDirect(SPSolver);
 PETSC_EXTERN PetscErrorCode SPSolverDirectCheck(SPSolver, PetscInt);
+PETSC_EXTERN PetscErrorCode SPSolverSetUpPCLag(SPSolver);
+PETSC_EXTERN PetscErrorCode SPSolverPCLagJacobian(SPSolver);
+PETSC_EXTERN PetscErrorCode SPSolverPCLagSolved(SPSolver);
 
 struct _n_SPOutput {
   DM          dm;  /* not owned */

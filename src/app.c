@@ -181,6 +181,8 @@ PetscErrorCode SPAppSummary(SPApp a)
   PetscCall(PetscViewerASCIIPrintf(v, "newton_iterations %" PetscInt_FMT "\nlinear_iterations %" PetscInt_FMT "\nfunction_evaluations %" PetscInt_FMT "\n", newton, linear, functions));
   PetscCall(SPSolverGetJacobianReuses(a->solver, &reuses));
   PetscCall(PetscViewerASCIIPrintf(v, "jacobian_reuses %" PetscInt_FMT "\n", reuses));
+  PetscCall(SPSolverGetPCKeeps(a->solver, &reuses));
+  PetscCall(PetscViewerASCIIPrintf(v, "preconditioner_kept %" PetscInt_FMT "\n", reuses));
   PetscCall(SPSolverGetRefinements(a->solver, &refined, &refinedLinear));
   PetscCall(PetscViewerASCIIPrintf(v, "refined_steps %" PetscInt_FMT "\nrefinement_linear_iterations %" PetscInt_FMT "\n", refined, refinedLinear));
   PetscCall(SPSolverGetAccepted(a->solver, &accepted));

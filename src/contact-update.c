@@ -19,6 +19,7 @@ static PetscErrorCode Reduce(SPContact c, PetscInt nloc[3], PetscReal rloc[3])
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Allreduce(nloc, nall, 3, MPIU_INT, MPI_SUM, comm));
   if (nall[2]) c->activeVersion++; /* the contact tangent's structure changed (SPContactGetActiveVersion) */
+  c->activeChanges += nall[2];
   PetscCallMPI(MPI_Allreduce(rloc, rall, 3, MPIU_REAL, MPI_MAX, comm));
   c->stats.activePoints   = nall[0];
   c->stats.activeChanged  = nall[1];
@@ -535,6 +536,17 @@ PetscErrorCode SPContactGetActiveVersion(SPContact c, PetscInt *version)
 {
   PetscFunctionBeginUser;
   *version = c && c->enabled ? 2 * c->activeVersion + (SPContactGeometricTangent(c) ? 1 : 0) : 0;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The active points of the last bookkeeping, and the changes of active state summed over the run
+   (a point that closes and opens again counts twice): the number of points whose state differs
+   between two moments of the run is at most the difference of the sums */
+PetscErrorCode SPContactGetActiveChanges(SPContact c, PetscInt *active, PetscInt *changes)
+{
+  PetscFunctionBeginUser;
+  *active  = c && c->enabled ? c->stats.activePoints : 0;
+  *changes = c && c->enabled ? c->activeChanges : 0;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -245,6 +245,7 @@ static PetscErrorCode FormJacobian(SNES snes, Vec X, Mat J, Mat P, void *ctx)
       PetscCall(PetscLogEventEnd(s->log->contactAssembly, 0, 0, 0, 0));
     }
   }
+  PetscCall(SPSolverPCLagJacobian(s));
   if (J != P) {
     PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
     PetscCall(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY));
@@ -295,6 +296,7 @@ static PetscErrorCode ShiftHook(SNESLineSearch ls, Vec X, Vec Y, Vec W, PetscBoo
   PetscBool limited, shifted, refined = PETSC_FALSE;
 
   PetscFunctionBeginUser;
+  PetscCall(SPSolverPCLagSolved(s)); /* before RefineStep continues the solve */
   PetscCall(PetscLogEventBegin(s->log->shiftUpdate, 0, 0, 0, 0));
   PetscCall(SPContactLimitStep(s->contact, X, Y, W, &limited));
   PetscCall(PetscLogEventEnd(s->log->shiftUpdate, 0, 0, 0, 0));
@@ -640,6 +642,7 @@ PetscErrorCode SPSolverCreate(DM dm, SPProblem problem, SPContact contact, SPLog
   s->jacReuseMax = 5;
   s->acceptRtol  = 1e-3;
   s->directIts   = 100;
+  s->pcLag       = 0.25;
   s->rtolMax     = 1e-3;
   s->settledFactor = 1e-3;
   s->measured      = PETSC_TRUE;
@@ -733,6 +736,7 @@ PetscErrorCode SPSolverSetFromOptions(SPSolver s)
   PetscCall(PetscOptionsBool("-solver_inexact_inner", "Inexact Newton, methods that update the shifts after a converged solve (alm), frictionless: a solve counts as converged on a settled active set once |F| <= 0.1 rho |dF| (dF: the forces the next update adds, rho: the update's contraction), the last one (gap tolerance met) at the residual target; its steps are solved no tighter than that needs (false: every solve to the residual target)", "SPSolverSetFromOptions", s->inexactInner, &s->inexactInner, NULL));
   PetscCall(PetscOptionsReal("-solver_linear_accept", "A linear solve that stops short of its tolerance (its iteration limit, a GMRES breakdown) counts as converged if its true residual |b - A x| is at most this x |b| (0: never; it then fails the Newton solve)", "SPSolverSetFromOptions", s->acceptRtol, &s->acceptRtol, NULL));
   PetscCall(PetscOptionsInt("-solver_direct_switch", "2D, solver not chosen by -ksp_type/-pc_type: once a linear solve takes more than this many iterations, or fails, the rest of the run factors the Jacobian (LU, MUMPS) (0: never)", "SPSolverSetFromOptions", s->directIts, &s->directIts, NULL));
+  PetscCall(PetscOptionsReal("-solver_pc_lag", "Linear material, frictionless, no pairs, iterative solver: a new Jacobian keeps GAMG's preconditioner while the points whose active state changed since its build are at most this fraction of its active points, and while solves with it converge at least 2/3 as fast per decade as the first one (README Performance; 0: a new preconditioner with every new Jacobian)", "SPSolverSetFromOptions", s->pcLag, &s->pcLag, NULL));
   PetscCall(PetscOptionsInt("-solver_stall_its", "Stop a Newton solve after this many iterations without a 1% decrease of the residual or the gap error (0: never)", "SPSolverSetFromOptions", s->stallIts, &s->stallIts, NULL));
   PetscCall(PetscOptionsBool("-solver_fast_prealloc", "First-order mesh: preallocate the matrix from vertex adjacency and build the rigid-body modes from vertex coordinates (false: DMCreateMatrix, DMPlexCreateRigidBody)", "SPSolverSetFromOptions", prealloc, &prealloc, NULL));
   PetscCall(PetscOptionsBool("-solver_gamg_shared_graph", "Frictionless small strain without contact pairs (a symmetric matrix, graph not filtered): GAMG aggregates on the system matrix itself instead of PETSc's copy of it (same aggregates, one matrix less at the peak; false: PETSc's copy). With pairs or friction the graph is PETSc's filtered copy (-pc_gamg_threshold 0)", "SPSolverSetFromOptions", share, &share, NULL));
@@ -740,6 +744,7 @@ PetscErrorCode SPSolverSetFromOptions(SPSolver s)
   PetscCheck(s->atolRel >= 0.0 && s->atolRel < 1.0, PetscObjectComm((PetscObject)s->dm), PETSC_ERR_USER_INPUT, "-solver_atol_rel %g: must be in [0, 1)", (double)s->atolRel);
   PetscCheck(s->acceptRtol >= 0.0 && s->acceptRtol < 1.0, PetscObjectComm((PetscObject)s->dm), PETSC_ERR_USER_INPUT, "-solver_linear_accept %g: must be in [0, 1) (0: a linear solve short of its tolerance fails the Newton solve)", (double)s->acceptRtol);
   PetscCheck(s->directIts >= 0, PetscObjectComm((PetscObject)s->dm), PETSC_ERR_USER_INPUT, "-solver_direct_switch %" PetscInt_FMT ": must be >= 0 (0: never switch to a direct solver)", s->directIts);
+  PetscCheck(s->pcLag >= 0.0 && s->pcLag < PETSC_INFINITY, PetscObjectComm((PetscObject)s->dm), PETSC_ERR_USER_INPUT, "-solver_pc_lag %g: must be >= 0 and finite (0: a new preconditioner with every new Jacobian)", (double)s->pcLag);
   PetscCheck(s->stallIts >= 0, PetscObjectComm((PetscObject)s->dm), PETSC_ERR_USER_INPUT, "-solver_stall_its %" PetscInt_FMT ": must be >= 0 (0: no stagnation test)", s->stallIts);
   PetscCheck(s->jacReuseMax >= 0, PetscObjectComm((PetscObject)s->dm), PETSC_ERR_USER_INPUT, "-solver_jacobian_reuse %" PetscInt_FMT ": must be >= 0 (0: assemble every Newton iteration)", s->jacReuseMax);
   PetscCheck(s->rtolMax > 0.0 && s->rtolMax < 1.0, PetscObjectComm((PetscObject)s->dm), PETSC_ERR_USER_INPUT, "-solver_inexact_rtol %g: must be in (0, 1) (1e-3 is the default; -solver_inexact false for exact solves)", (double)s->rtolMax);
@@ -781,6 +786,7 @@ PetscErrorCode SPSolverSetFromOptions(SPSolver s)
   PetscCall(SNESSetFromOptions(s->snes));
   PetscCall(SPSolverSetUpAccept(s));
   PetscCall(SPSolverSetUpDirect(s));
+  PetscCall(SPSolverSetUpPCLag(s));
   {
     KSP      ksp;
     PetscInt maxit, kmaxit;
@@ -918,6 +924,14 @@ PetscErrorCode SPSolverGetJacobianReuses(SPSolver s, PetscInt *reuses)
 {
   PetscFunctionBeginUser;
   *reuses = s->jacReuses;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* New Jacobians that kept the preconditioner of an earlier one (solver-pclag.c) */
+PetscErrorCode SPSolverGetPCKeeps(SPSolver s, PetscInt *keeps)
+{
+  PetscFunctionBeginUser;
+  *keeps = s->pcKeeps;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
