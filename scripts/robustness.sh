@@ -2,8 +2,8 @@
 # Robustness of the default solver strategy (inexact Newton + Jacobian reuse, see README
 # "Performance"): B2, B3, B4 (24^3), B6 and the two-pass patch test (without increment growth, as measured before it existed) at alpha 10, 100, 1000 for
 # penalty, shifted and alm, with the default iterative solver (CG or GMRES + GAMG), against the
-# same runs with exact linear solves and a fresh Jacobian every Newton iteration
-# (-solver_inexact false -solver_jacobian_reuse 0).
+# same runs with exact linear solves and a fresh Jacobian and preconditioner every Newton iteration
+# (-solver_inexact false -solver_jacobian_reuse 0 -solver_pc_lag 0).
 # Usage: scripts/robustness.sh [NP] [--cases c1,c2] [--methods m1,m2] [-- extra options]
 # Prints one table (also build/robustness/robustness.csv): Newton iterations with the default and
 # with exact solves, their difference, linear iterations per Newton iteration for both, converged.
@@ -30,7 +30,7 @@ declare -A opts=(
 )
 out=build/robustness; mkdir -p "$out"
 csv=$out/robustness.csv
-echo "case,method,alpha,newton,newton_exact,extra_newton,lin_per_newton,lin_per_newton_exact,jacobian_reuses,converged,converged_exact" > "$csv"
+echo "case,method,alpha,newton,newton_exact,extra_newton,lin_per_newton,lin_per_newton_exact,jacobian_reuses,preconditioner_kept,converged,converged_exact" > "$csv"
 v() { awk -v k="$2" '/^=== spcontact summary/{on=1} on && $1==k {print $2}' "$1" | tail -1; }
 for c in ${cases//,/ }; do
   for m in ${methods//,/ }; do
@@ -39,10 +39,10 @@ for c in ${cases//,/ }; do
       # shellcheck disable=SC2086
       $MPIEXEC -n "$np" bin/spcontact ${opts[$c]} -contact_method "$m" -contact_alpha "$a" -output_dir "$out" -output_name "${c}_${m}_a$a" -output_fields false -quiet "${extra[@]}" > "$base.txt" 2>&1
       # shellcheck disable=SC2086
-      $MPIEXEC -n "$np" bin/spcontact ${opts[$c]} -contact_method "$m" -contact_alpha "$a" -output_dir "$out" -output_name "${c}_${m}_a${a}_exact" -output_fields false -quiet -solver_inexact false -solver_jacobian_reuse 0 "${extra[@]}" > "$base.exact.txt" 2>&1
+      $MPIEXEC -n "$np" bin/spcontact ${opts[$c]} -contact_method "$m" -contact_alpha "$a" -output_dir "$out" -output_name "${c}_${m}_a${a}_exact" -output_fields false -quiet -solver_inexact false -solver_jacobian_reuse 0 -solver_pc_lag 0 "${extra[@]}" > "$base.exact.txt" 2>&1
       n=$(v "$base.txt" newton_iterations); ne=$(v "$base.exact.txt" newton_iterations)
       l=$(v "$base.txt" linear_iterations); le=$(v "$base.exact.txt" linear_iterations)
-      echo "$c,$m,$a,$n,$ne,$((n - ne)),$(awk -v l="$l" -v n="$n" 'BEGIN{printf "%.1f", l/(n>0?n:1)}'),$(awk -v l="$le" -v n="$ne" 'BEGIN{printf "%.1f", l/(n>0?n:1)}'),$(v "$base.txt" jacobian_reuses),$(v "$base.txt" converged),$(v "$base.exact.txt" converged)" >> "$csv"
+      echo "$c,$m,$a,$n,$ne,$((n - ne)),$(awk -v l="$l" -v n="$n" 'BEGIN{printf "%.1f", l/(n>0?n:1)}'),$(awk -v l="$le" -v n="$ne" 'BEGIN{printf "%.1f", l/(n>0?n:1)}'),$(v "$base.txt" jacobian_reuses),$(v "$base.txt" preconditioner_kept),$(v "$base.txt" converged),$(v "$base.exact.txt" converged)" >> "$csv"
       tail -1 "$csv" >&2
     done
   done
