@@ -409,6 +409,7 @@ struct _n_SPSolver {
   PetscBool           inexact;              /* linear tolerance from the Newton iteration's progress */
   PetscBool           targetFloor;          /* -solver_target_floor: without the inexact Newton, no solve past 1% of the residual target */
   PetscReal           rtolMax, rtolMin, rtol, rtolCap, lastF; /* its range (rtolMin: -ksp_rtol), value, safeguard cap, previous |F| */
+  PetscReal           rtolSearch, searchCap; /* -solver_inexact_rtol_search, and its cap in this solve (search steps) */
   PetscBool           resolve, lastConverged; /* this solve repeats a converged one at the same load (after a shift update) */
   PetscReal           lastLoad, settledFactor;
   PetscBool           measured, measuring; /* -solver_inexact_measured; and this solve's method updates in Newton */

@@ -477,9 +477,12 @@ static PetscErrorCode LinearTolerance(SPSolver s, PetscInt it, PetscReal fnorm)
     PetscCall(SPContactGetShiftContraction(s->contact, &rho));
     PetscCall(SPContactShiftsInNewton(s->contact, &inNewton));
     PetscCall(SPContactUpdatesShifts(s->contact, &updates));
-    s->rtolCap = PetscMax(s->rtolMin, PetscMin(s->rtolMax, 0.1 * rho));
+    s->rtolCap   = PetscMax(s->rtolMin, PetscMin(s->rtolMax, 0.1 * rho));
+    /* alm's search steps stay at the cap of its other steps (a looser one: B2 and B4 +1 Newton
+       iteration at alpha 10) */
+    s->searchCap = updates && !inNewton ? s->rtolCap : PetscMax(s->rtolMin, PetscMin(s->rtolSearch, 0.1 * rho));
     /* penalty: no update to feed, the first step is a search step */
-    eta           = s->resolve ? s->rtolMin : (on && !updates ? s->rtolCap : s->settledFactor * s->rtolCap);
+    eta           = s->resolve ? s->rtolMin : (on && !updates ? s->searchCap : s->settledFactor * s->rtolCap);
     loose         = s->rtolCap;
     s->rhoMeas[0] = s->rhoMeas[1] = 0.0;
     s->measuring  = inNewton && s->measured ? PETSC_TRUE : PETSC_FALSE;
@@ -488,8 +491,11 @@ static PetscErrorCode LinearTolerance(SPSolver s, PetscInt it, PetscReal fnorm)
     const PetscReal r  = fnorm / s->lastF;
     const PetscBool ew = r < 1.0 && !st.activeChanged && !(s->measuring && s->lastUpdate) ? PETSC_TRUE : PETSC_FALSE;
     MeasureContraction(s, &st);
-    if (r > 0.5 && st.maxShiftChange == 0.0) s->rtolCap = PetscMax(s->rtolMin, 1e-2 * s->rtolCap);
-    eta = ew ? PetscMin(s->rtolCap, 0.9 * r * r) : s->rtolCap;
+    if (r > 0.5 && st.maxShiftChange == 0.0) {
+      s->rtolCap   = PetscMax(s->rtolMin, 1e-2 * s->rtolCap);
+      s->searchCap = PetscMax(s->rtolMin, 1e-2 * s->searchCap);
+    }
+    eta = ew ? PetscMin(s->rtolCap, 0.9 * r * r) : (st.activeChanged ? s->searchCap : s->rtolCap);
     loose = eta;
     /* settled active set: the step feeds the next shift update, whose error it becomes */
     if (!st.activeChanged) eta = PetscMin(eta, SettledTolerance(s));
@@ -644,6 +650,7 @@ PetscErrorCode SPSolverCreate(DM dm, SPProblem problem, SPContact contact, SPLog
   s->directIts   = 100;
   s->pcLag       = 0.25;
   s->rtolMax     = 1e-3;
+  s->rtolSearch  = 1e-2;
   s->settledFactor = 1e-3;
   s->measured      = PETSC_TRUE;
   s->inexactInner  = PETSC_TRUE;
@@ -729,7 +736,8 @@ PetscErrorCode SPSolverSetFromOptions(SPSolver s)
   PetscCall(PetscOptionsInt("-solver_jacobian_reuse", "Linear material: keep the assembled Jacobian and its preconditioner for at most this many Newton iterations in a row while the active set does not change (0: assemble every iteration)", "SPSolverSetFromOptions", s->jacReuseMax, &s->jacReuseMax, NULL));
   PetscCall(PetscOptionsBool("-solver_inexact", "Inexact Newton: search steps to -solver_inexact_rtol, steps that feed a shift update tighter (README Performance); default true for a linear material without friction (false: every solve to -ksp_rtol)", "SPSolverSetFromOptions", s->inexact, &s->inexact, NULL));
   PetscCall(PetscOptionsBool("-solver_target_floor", "Without the inexact Newton (the default with friction or a nonlinear material): no linear solve reduces the residual further than to 1% of the Newton residual target, at most -solver_inexact_rtol, at least -ksp_rtol (false: every solve to -ksp_rtol)", "SPSolverSetFromOptions", s->targetFloor, &s->targetFloor, NULL));
-  PetscCall(PetscOptionsReal("-solver_inexact_rtol", "Inexact Newton: the loosest linear relative tolerance", "SPSolverSetFromOptions", s->rtolMax, &s->rtolMax, NULL));
+  PetscCall(PetscOptionsReal("-solver_inexact_rtol", "Inexact Newton: the loosest linear relative tolerance of a step that may feed a shift update", "SPSolverSetFromOptions", s->rtolMax, &s->rtolMax, NULL));
+  PetscCall(PetscOptionsReal("-solver_inexact_rtol_search", "Inexact Newton: the loosest linear relative tolerance of a search step (from an iterate whose active set just changed; penalty's first step), at most 0.1/(1 + alpha)", "SPSolverSetFromOptions", s->rtolSearch, &s->rtolSearch, NULL));
   PetscCall(PetscOptionsReal("-solver_inexact_settled", "Inexact Newton: factor on the loosest linear tolerance for a step from an iterate whose active set did not change (the step then feeds a shift update), and for a solve's first step with a method that updates the shifts (shifted, alm; with penalty it is a search step)", "SPSolverSetFromOptions", s->settledFactor, &s->settledFactor, NULL));
   PetscCall(PetscOptionsBool("-solver_inexact_measured", "Inexact Newton, methods that update the shifts in Newton (shifted): once a shift update on a settled active set has measured the contraction rho of the gap error, steps that feed a shift update are solved to rho^2 (at most the loosest tolerance), and Eisenstat-Walker does not tighten a step after a shift update or an active-set change (false: the rule before, -solver_inexact_settled x the loosest)", "SPSolverSetFromOptions", s->measured, &s->measured, NULL));
   PetscCall(PetscOptionsBool("-solver_inexact_refine", "Inexact Newton with the measured contraction (shifted): a step that needs the tight tolerance only because it may feed a shift update before the contraction is measured (a solve's first step, a settled step before the first measurement) is solved to the loosest tolerance and continued to the tight one only if the shifts then move (false: solved tight at once)", "SPSolverSetFromOptions", s->refine, &s->refine, NULL));
