@@ -478,11 +478,12 @@ static PetscErrorCode LinearTolerance(SPSolver s, PetscInt it, PetscReal fnorm)
     PetscCall(SPContactShiftsInNewton(s->contact, &inNewton));
     PetscCall(SPContactUpdatesShifts(s->contact, &updates));
     s->rtolCap   = PetscMax(s->rtolMin, PetscMin(s->rtolMax, 0.1 * rho));
-    /* alm's search steps stay at the cap of its other steps (a looser one: B2 and B4 +1 Newton
-       iteration at alpha 10) */
+    /* later search steps (the active set just changed) to searchCap; a solve's first step stays
+       at rtolCap (penalty's first step at 1e-2: B1 2 -> 3 Newton iterations, B4 at 32^3 on 2 ranks
+       4 -> 5), and so do alm's search steps (1e-2: B2 and B4 +1 Newton iteration at alpha 10) */
     s->searchCap = updates && !inNewton ? s->rtolCap : PetscMax(s->rtolMin, PetscMin(s->rtolSearch, 0.1 * rho));
     /* penalty: no update to feed, the first step is a search step */
-    eta           = s->resolve ? s->rtolMin : (on && !updates ? s->searchCap : s->settledFactor * s->rtolCap);
+    eta           = s->resolve ? s->rtolMin : (on && !updates ? s->rtolCap : s->settledFactor * s->rtolCap);
     loose         = s->rtolCap;
     s->rhoMeas[0] = s->rhoMeas[1] = 0.0;
     s->measuring  = inNewton && s->measured ? PETSC_TRUE : PETSC_FALSE;
@@ -737,7 +738,7 @@ PetscErrorCode SPSolverSetFromOptions(SPSolver s)
   PetscCall(PetscOptionsBool("-solver_inexact", "Inexact Newton: search steps to -solver_inexact_rtol, steps that feed a shift update tighter (README Performance); default true for a linear material without friction (false: every solve to -ksp_rtol)", "SPSolverSetFromOptions", s->inexact, &s->inexact, NULL));
   PetscCall(PetscOptionsBool("-solver_target_floor", "Without the inexact Newton (the default with friction or a nonlinear material): no linear solve reduces the residual further than to 1% of the Newton residual target, at most -solver_inexact_rtol, at least -ksp_rtol (false: every solve to -ksp_rtol)", "SPSolverSetFromOptions", s->targetFloor, &s->targetFloor, NULL));
   PetscCall(PetscOptionsReal("-solver_inexact_rtol", "Inexact Newton: the loosest linear relative tolerance of a step that may feed a shift update", "SPSolverSetFromOptions", s->rtolMax, &s->rtolMax, NULL));
-  PetscCall(PetscOptionsReal("-solver_inexact_rtol_search", "Inexact Newton: the loosest linear relative tolerance of a search step (from an iterate whose active set just changed; penalty's first step), at most 0.1/(1 + alpha)", "SPSolverSetFromOptions", s->rtolSearch, &s->rtolSearch, NULL));
+  PetscCall(PetscOptionsReal("-solver_inexact_rtol_search", "Inexact Newton, penalty and shifted: the loosest linear relative tolerance of a search step (from an iterate whose active set just changed; not a solve's first step), at most 0.1/(1 + alpha)", "SPSolverSetFromOptions", s->rtolSearch, &s->rtolSearch, NULL));
   PetscCall(PetscOptionsReal("-solver_inexact_settled", "Inexact Newton: factor on the loosest linear tolerance for a step from an iterate whose active set did not change (the step then feeds a shift update), and for a solve's first step with a method that updates the shifts (shifted, alm; with penalty it is a search step)", "SPSolverSetFromOptions", s->settledFactor, &s->settledFactor, NULL));
   PetscCall(PetscOptionsBool("-solver_inexact_measured", "Inexact Newton, methods that update the shifts in Newton (shifted): once a shift update on a settled active set has measured the contraction rho of the gap error, steps that feed a shift update are solved to rho^2 (at most the loosest tolerance), and Eisenstat-Walker does not tighten a step after a shift update or an active-set change (false: the rule before, -solver_inexact_settled x the loosest)", "SPSolverSetFromOptions", s->measured, &s->measured, NULL));
   PetscCall(PetscOptionsBool("-solver_inexact_refine", "Inexact Newton with the measured contraction (shifted): a step that needs the tight tolerance only because it may feed a shift update before the contraction is measured (a solve's first step, a settled step before the first measurement) is solved to the loosest tolerance and continued to the tight one only if the shifts then move (false: solved tight at once)", "SPSolverSetFromOptions", s->refine, &s->refine, NULL));
@@ -756,6 +757,7 @@ PetscErrorCode SPSolverSetFromOptions(SPSolver s)
   PetscCheck(s->stallIts >= 0, PetscObjectComm((PetscObject)s->dm), PETSC_ERR_USER_INPUT, "-solver_stall_its %" PetscInt_FMT ": must be >= 0 (0: no stagnation test)", s->stallIts);
   PetscCheck(s->jacReuseMax >= 0, PetscObjectComm((PetscObject)s->dm), PETSC_ERR_USER_INPUT, "-solver_jacobian_reuse %" PetscInt_FMT ": must be >= 0 (0: assemble every Newton iteration)", s->jacReuseMax);
   PetscCheck(s->rtolMax > 0.0 && s->rtolMax < 1.0, PetscObjectComm((PetscObject)s->dm), PETSC_ERR_USER_INPUT, "-solver_inexact_rtol %g: must be in (0, 1) (1e-3 is the default; -solver_inexact false for exact solves)", (double)s->rtolMax);
+  PetscCheck(s->rtolSearch > 0.0 && s->rtolSearch < 1.0, PetscObjectComm((PetscObject)s->dm), PETSC_ERR_USER_INPUT, "-solver_inexact_rtol_search %g: must be in (0, 1) (1e-2 is the default)", (double)s->rtolSearch);
   PetscCheck(s->settledFactor > 0.0 && s->settledFactor <= 1.0, PetscObjectComm((PetscObject)s->dm), PETSC_ERR_USER_INPUT, "-solver_inexact_settled %g: must be in (0, 1]", (double)s->settledFactor);
   if (testJ) s->jacReuseMax = 0; /* -snes_test_jacobian compares the assembled Jacobian at every iterate */
   PetscCall(PetscOptionsHasName(NULL, NULL, "-snes_atol", &s->userAtol));

@@ -77,6 +77,8 @@ stall iterations negative|input/hertz2d.opts|-solver_stall_its -1
 direct switch negative|input/hertz2d.opts|-solver_direct_switch -1
 Jacobian reuse negative|input/hertz2d.opts|-solver_jacobian_reuse -1
 inexact tolerance above 1|input/hertz2d.opts|-solver_inexact_rtol 2
+search tolerance zero|input/hertz2d.opts|-solver_inexact_rtol_search 0
+kept preconditioner fraction negative|input/hertz2d.opts|-solver_pc_lag -1
 inexact settled factor zero|input/hertz2d.opts|-solver_inexact_settled 0
 linear accept tolerance 1|input/hertz2d.opts|-solver_linear_accept 1
 linear accept tolerance negative|input/hertz2d.opts|-solver_linear_accept -1e-3
