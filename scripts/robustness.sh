@@ -6,7 +6,8 @@
 # (-solver_inexact false -solver_jacobian_reuse 0 -solver_pc_lag 0).
 # Usage: scripts/robustness.sh [NP] [--cases c1,c2] [--methods m1,m2] [-- extra options]
 # Prints one table (also build/robustness/robustness.csv): Newton iterations with the default and
-# with exact solves, their difference, linear iterations per Newton iteration for both, converged.
+# with exact solves, their difference, linear iterations per Newton iteration for both, Jacobian
+# reuses and Jacobians that kept the preconditioner (defaults), converged.
 cd "$(dirname "$0")/.." || exit 1
 source scripts/env.sh
 np=1; cases=B2,B3,B4,B6,patch2p; methods=penalty,shifted,alm; extra=()
@@ -16,7 +17,7 @@ while [ $# -gt 0 ]; do
     --cases) cases=$2; shift 2 ;;
     --methods) methods=$2; shift 2 ;;
     --) shift; extra=("$@"); break ;;
-    -h|--help) sed -n '2,9p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,10p' "$0"; exit 0 ;;
     *) echo "robustness.sh: unknown argument $1 (see --help)" >&2; exit 1 ;;
   esac
 done
