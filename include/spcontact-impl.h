@@ -435,6 +435,7 @@ struct _n_SPSolver {
 PETSC_EXTERN PetscErrorCode SPSolverSetUpAccept(SPSolver);
 PETSC_EXTERN PetscErrorCode SPSolverSetUpDirect(SPSolver);
 PETSC_EXTERN PetscErrorCode SPSolverDirectCheck(SPSolver, PetscInt);
+PETSC_EXTERN PetscErrorCode SPSolverIsDirect(SPSolver, PetscBool *);
 PETSC_EXTERN PetscErrorCode SPSolverSetUpPCLag(SPSolver);
 PETSC_EXTERN PetscErrorCode SPSolverPCLagJacobian(SPSolver);
 PETSC_EXTERN PetscErrorCode SPSolverPCLagSolved(SPSolver);

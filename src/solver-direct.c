@@ -111,6 +111,18 @@ PetscErrorCode SPSolverRecoverDirect(SPSolver s, PetscBool *retry)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Whether each Newton step is a direct solve (-ksp_type preonly: the switch's LU or the user's):
+   its step is exact, and its factorization belongs to one Jacobian */
+PetscErrorCode SPSolverIsDirect(SPSolver s, PetscBool *direct)
+{
+  KSP ksp;
+
+  PetscFunctionBeginUser;
+  PetscCall(SNESGetKSP(s->snes, &ksp));
+  PetscCall(PetscObjectTypeCompare((PetscObject)ksp, KSPPREONLY, direct));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* The load step from which the run factors its Jacobian (0: never; summary key direct_solver_from_step) */
 PetscErrorCode SPSolverGetDirectStep(SPSolver s, PetscInt *step)
 {

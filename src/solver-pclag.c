@@ -29,30 +29,18 @@ PetscErrorCode SPSolverSetUpPCLag(SPSolver s)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode Iterative(SPSolver s, PetscBool *iterative)
-{
-  KSP       ksp;
-  PetscBool preonly;
-
-  PetscFunctionBeginUser;
-  PetscCall(SNESGetKSP(s->snes, &ksp));
-  PetscCall(PetscObjectTypeCompare((PetscObject)ksp, KSPPREONLY, &preonly));
-  *iterative = !preonly;
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 /* A new Jacobian was assembled: keep the preconditioner, or build it for this Jacobian (SNES reads
    its lag after the Jacobian callback) */
 PetscErrorCode SPSolverPCLagJacobian(SPSolver s)
 {
   PetscInt  active, changes;
-  PetscBool keep = PETSC_FALSE;
+  PetscBool keep, direct;
 
   PetscFunctionBeginUser;
   if (!s->pcLagAllowed) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(SPContactGetActiveChanges(s->contact, &active, &changes));
-  PetscCall(Iterative(s, &keep));
-  keep = keep && s->pcActive > 0 && !s->pcSpent && (PetscReal)(changes - s->pcChanges) <= s->pcLag * (PetscReal)s->pcActive;
+  PetscCall(SPSolverIsDirect(s, &direct));
+  keep = !direct && s->pcActive > 0 && !s->pcSpent && (PetscReal)(changes - s->pcChanges) <= s->pcLag * (PetscReal)s->pcActive;
   PetscCall(SNESSetLagPreconditioner(s->snes, keep ? -1 : 1));
   if (keep) {
     s->pcKept = PETSC_TRUE;

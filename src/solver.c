@@ -268,12 +268,12 @@ static PetscErrorCode RefineStep(SPSolver s, Vec X, Vec Y, Vec W, PetscBool *ref
   PetscFunctionBeginUser;
   *refined = PETSC_FALSE;
   if (s->refineRtol <= 0.0 || s->refineRtol >= s->rtol) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCall(SNESGetKSP(s->snes, &ksp));
-  PetscCall(PetscObjectTypeCompare((PetscObject)ksp, KSPPREONLY, &direct));
+  PetscCall(SPSolverIsDirect(s, &direct));
   if (direct) PetscFunctionReturn(PETSC_SUCCESS); /* a direct solve: the step is exact already */
   PetscCall(SPContactStepFeedsUpdate(s->contact, W, &feeds));
   if (!feeds) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(SNESGetFunction(s->snes, &F, NULL, NULL)); /* F(X): the line search evaluates F(W) after this hook */
+  PetscCall(SNESGetKSP(s->snes, &ksp));
   PetscCall(KSPGetInitialGuessNonzero(ksp, &guess));
   PetscCall(KSPSetInitialGuessNonzero(ksp, PETSC_TRUE));
   /* with a nonzero initial guess PETSc's test is relative to the right-hand side, as the first solve's */
