@@ -1,48 +1,69 @@
-/* spcontact's own options given without a value. PETSc leaves a number at its default when its
-   option has no value (PetscOptionsGetInt/GetReal: not set), so "-load_steps" whose value was
-   lost ran one load step without a word. After set-up, an option of spcontact's families that
-   the run read and that has no value is refused in one line, unless it is one of spcontact's
-   flags (Flags below: every PetscOptionsBool name in src/, checked by the test help_complete;
-   an indexed flag such as -bc_<i>_follower by its tail). Reading the options' names from
-   PetscOptionsGetAll's string, and only those already read, leaves the report of unused
-   (misspelt) options as it was. */
+/* Options given without a value. PETSc leaves a number at its default when its option has no value
+   (PetscOptionsGetInt/GetReal: not set), so "-load_steps" whose value was lost ran one load step
+   without a word, and so did "-ksp_rtol" or "-snes_max_it". After set-up, an option that the run
+   read and that has no value is refused in one line if
+   - it is one of spcontact's families, unless it is one of spcontact's flags (Flags below: every
+     PetscOptionsBool name in src/, checked by the test help_complete; an indexed flag such as
+     -bc_<i>_follower by its tail), or
+   - it is one of PETSc's families (-ksp_, -snes_, -pc_, -mg_, -dm_, -mat_, -petscpartitioner_)
+     and its name ends with a numeric tail (NumericTails: tolerances, iteration limits, restart,
+     thresholds, mesh sizes; no PETSc flag ends so), read or not (-mg_levels_* are read at the
+     first solve). PETSc's flags, which take no value, keep working, and so does every PETSc
+     option outside that list.
+   The options' names come from PetscOptionsGetAll's string; spcontact's are checked only once
+   read, which leaves the report of unused (misspelt) options as it was. */
 #include <ctype.h>
 #include <spcontact-impl.h>
 
 static const char *const Families[] = {"-contact_", "-solver_", "-load_", "-material_", "-bc_", "-output_", "-mesh_", "-restart", "-max_wall_time", "-debug_"};
 
+static const char *const PetscFamilies[] = {"-ksp_", "-snes_", "-pc_", "-mg_", "-dm_", "-mat_", "-petscpartitioner_"};
+
+static const char *const NumericTails[] = {"_rtol", "_atol", "_stol", "_dtol", "_divtol", "_max_it", "_max_funcs", "_max_fail", "_max_linear_solve_fail", "_restart", "_threshold", "_eq_limit", "_nsmooths", "_square_graph", "_lag_preconditioner", "_lag_jacobian", "_levels", "_refine", "_faces", "_lower", "_upper", "_dim", "_esteig", "_damping"};
+
 static const char *const Flags[] = {"-contact_branch_hold", "-contact_friction_stick_hold", "-contact_monitor", "-contact_pair_exchange_all", "-contact_safeguard", "-contact_shift_predict", "-contact_shift_settled", "-contact_two_pass", "_follower", "-output_fields", "-quiet", "-solver_check_fast", "-solver_fast_bulk", "-solver_fast_prealloc", "-solver_gamg_shared_graph", "-solver_inexact", "-solver_inexact_inner", "-solver_inexact_measured", "-solver_inexact_refine", "-solver_linear_reuse", "-solver_target_floor"};
 
-/* name (with its dash, lower case) is a flag: equal to a full flag name, or ending with a tail */
-static PetscBool IsFlag(const char name[])
+/* name ends with one of tails[0..n) (and is longer) */
+static PetscBool HasTail(const char name[], const char *const tails[], size_t n)
 {
-  const size_t n = strlen(name);
+  const size_t len = strlen(name);
 
-  for (size_t k = 0; k < PETSC_STATIC_ARRAY_LENGTH(Flags); ++k) {
-    const size_t m = strlen(Flags[k]);
-    if (Flags[k][0] == '-' ? !strcmp(name, Flags[k]) : (n > m && !strcmp(name + n - m, Flags[k]))) return PETSC_TRUE;
+  for (size_t k = 0; k < n; ++k) {
+    const size_t m = strlen(tails[k]);
+    if (len > m && !strcmp(name + len - m, tails[k])) return PETSC_TRUE;
   }
   return PETSC_FALSE;
 }
 
-static PetscBool InFamily(const char name[])
+/* name (with its dash, lower case) is a flag: equal to a full flag name, or ending with a tail */
+static PetscBool IsFlag(const char name[])
 {
-  for (size_t k = 0; k < PETSC_STATIC_ARRAY_LENGTH(Families); ++k)
-    if (!strncmp(name, Families[k], strlen(Families[k]))) return PETSC_TRUE;
+  for (size_t k = 0; k < PETSC_STATIC_ARRAY_LENGTH(Flags); ++k)
+    if (Flags[k][0] == '-' ? !strcmp(name, Flags[k]) : HasTail(name, Flags + k, 1)) return PETSC_TRUE;
   return PETSC_FALSE;
 }
 
-/* One option name of the database: refused if it is spcontact's, was read, is not a flag and has
-   no value */
+static PetscBool InFamily(const char name[], const char *const families[], size_t n)
+{
+  for (size_t k = 0; k < n; ++k)
+    if (!strncmp(name, families[k], strlen(families[k]))) return PETSC_TRUE;
+  return PETSC_FALSE;
+}
+
+/* One option name of the database: refused if it needs a value and has none. spcontact's (not a
+   flag) only once read: a name that was not read is misspelt, and the unused-option report names
+   it. PETSc's numeric ones whether read or not: GAMG's level options are read at the first solve,
+   after this check */
 static PetscErrorCode CheckOne(MPI_Comm comm, const char name[])
 {
-  PetscBool used, set;
-  char      value[8];
+  const PetscBool ours = InFamily(name, Families, PETSC_STATIC_ARRAY_LENGTH(Families));
+  PetscBool       used = PETSC_TRUE, set;
+  char            value[8];
 
   PetscFunctionBeginUser;
-  if (!InFamily(name) || IsFlag(name)) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCall(PetscOptionsUsed(NULL, name + 1, &used)); /* the database keeps names without the dash */
-  if (!used) PetscFunctionReturn(PETSC_SUCCESS); /* not read: the unused-option report names it */
+  if (ours ? IsFlag(name) : !(InFamily(name, PetscFamilies, PETSC_STATIC_ARRAY_LENGTH(PetscFamilies)) && HasTail(name, NumericTails, PETSC_STATIC_ARRAY_LENGTH(NumericTails)))) PetscFunctionReturn(PETSC_SUCCESS);
+  if (ours) PetscCall(PetscOptionsUsed(NULL, name + 1, &used)); /* the database keeps names without the dash */
+  if (!used) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(PetscOptionsGetString(NULL, NULL, name, value, sizeof(value), &set));
   PetscCheck(!set || value[0], comm, PETSC_ERR_USER_INPUT, "%s needs a value (-help gives its meaning and default)", name);
   PetscFunctionReturn(PETSC_SUCCESS);

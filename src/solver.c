@@ -700,6 +700,30 @@ static PetscErrorCode SetUpMatrix(SPSolver s, PetscBool prealloc, PetscBool shar
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* PETSc's Newton and Krylov limits as read from the options, refused before the solve when no
+   solve could meet them (PETSc's option readers take a negative tolerance or none at all) */
+static PetscErrorCode CheckLimits(SPSolver s)
+{
+  MPI_Comm  comm = PetscObjectComm((PetscObject)s->dm);
+  KSP       ksp;
+  PetscReal atol, rtol, stol, katol;
+  PetscInt  maxit, kmaxit;
+
+  PetscFunctionBeginUser;
+  PetscCall(SNESGetKSP(s->snes, &ksp));
+  PetscCall(KSPGetTolerances(ksp, &s->rtolMin, &katol, NULL, &kmaxit));
+  s->rtolMax = PetscMax(s->rtolMax, s->rtolMin);
+  PetscCall(SNESGetTolerances(s->snes, &atol, &rtol, &stol, &maxit, NULL));
+  PetscCheck(maxit >= 1, comm, PETSC_ERR_USER_INPUT, "-snes_max_it %" PetscInt_FMT ": a load step needs at least 1 Newton iteration", maxit);
+  PetscCheck(kmaxit >= 1, comm, PETSC_ERR_USER_INPUT, "-ksp_max_it %" PetscInt_FMT ": a linear solve needs at least 1 iteration", kmaxit);
+  PetscCheck(rtol >= 0.0 && rtol < 1.0, comm, PETSC_ERR_USER_INPUT, "-snes_rtol %.6g: give a relative tolerance in [0, 1)", (double)rtol);
+  PetscCheck(atol >= 0.0 && !PetscIsInfOrNanReal(atol), comm, PETSC_ERR_USER_INPUT, "-snes_atol %.6g: give an absolute tolerance >= 0", (double)atol);
+  PetscCheck(stol >= 0.0 && stol < 1.0, comm, PETSC_ERR_USER_INPUT, "-snes_stol %.6g: give a step tolerance in [0, 1)", (double)stol);
+  PetscCheck(s->rtolMin >= 0.0 && s->rtolMin < 1.0, comm, PETSC_ERR_USER_INPUT, "-ksp_rtol %.6g: give a relative tolerance in [0, 1)", (double)s->rtolMin);
+  PetscCheck(katol >= 0.0 && !PetscIsInfOrNanReal(katol), comm, PETSC_ERR_USER_INPUT, "-ksp_atol %.6g: give an absolute tolerance >= 0", (double)katol);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* GAMG's graph without the system matrix's zero entries (-pc_gamg_threshold 0; PETSc's -1 keeps
    them as edges) with contact pairs or friction. A pair's slave rows keep the couplings of every
    master facet they have met (contact-pattern.c), zero while inactive: kept, they are graph edges
@@ -747,7 +771,7 @@ PetscErrorCode SPSolverSetFromOptions(SPSolver s)
   PetscCall(PetscOptionsBool("-solver_inexact_inner", "Inexact Newton, methods that update the shifts after a converged solve (alm), frictionless: a solve counts as converged on a settled active set once |F| <= 0.1 rho |dF| (dF: the forces the next update adds, rho: the update's contraction), the last one (gap tolerance met) at the residual target; its steps are solved no tighter than that needs (false: every solve to the residual target)", "SPSolverSetFromOptions", s->inexactInner, &s->inexactInner, NULL));
   PetscCall(PetscOptionsReal("-solver_linear_accept", "A linear solve that stops short of its tolerance (its iteration limit, a GMRES breakdown) counts as converged if its true residual |b - A x| is at most this x |b| (0: never; it then fails the Newton solve)", "SPSolverSetFromOptions", s->acceptRtol, &s->acceptRtol, NULL));
   PetscCall(PetscOptionsInt("-solver_direct_switch", "2D, solver not chosen by -ksp_type/-pc_type: once a linear solve takes more than this many iterations, or fails, the rest of the run factors the Jacobian (LU, MUMPS) (0: never)", "SPSolverSetFromOptions", s->directIts, &s->directIts, NULL));
-  PetscCall(PetscOptionsReal("-solver_pc_lag", "Linear material, frictionless, no pairs, iterative solver: a new Jacobian keeps GAMG's preconditioner while the points whose active state changed since its build are at most this fraction of its active points, and while solves with it converge at least 2/3 as fast per decade as the first one (README Performance; 0: a new preconditioner with every new Jacobian)", "SPSolverSetFromOptions", s->pcLag, &s->pcLag, NULL));
+  PetscCall(PetscOptionsReal("-solver_pc_lag", "Linear material, frictionless, no pairs, iterative solver: a new Jacobian keeps the preconditioner (GAMG by default, or the -pc_type given; not a factorization) while the points whose active state changed since its build are at most this fraction of its active points, and while solves with it converge at least 2/3 as fast per decade as the first one (README Performance; 0: a new preconditioner with every new Jacobian)", "SPSolverSetFromOptions", s->pcLag, &s->pcLag, NULL));
   PetscCall(PetscOptionsInt("-solver_stall_its", "Stop a Newton solve after this many iterations without a 1% decrease of the residual or the gap error (0: never)", "SPSolverSetFromOptions", s->stallIts, &s->stallIts, NULL));
   PetscCall(PetscOptionsBool("-solver_fast_prealloc", "First-order mesh: preallocate the matrix from vertex adjacency and build the rigid-body modes from vertex coordinates (false: DMCreateMatrix, DMPlexCreateRigidBody)", "SPSolverSetFromOptions", prealloc, &prealloc, NULL));
   PetscCall(PetscOptionsBool("-solver_gamg_shared_graph", "Frictionless small strain without contact pairs (a symmetric matrix, graph not filtered): GAMG aggregates on the system matrix itself instead of PETSc's copy of it (same aggregates, one matrix less at the peak; false: PETSc's copy). With pairs or friction the graph is PETSc's filtered copy (-pc_gamg_threshold 0)", "SPSolverSetFromOptions", share, &share, NULL));
@@ -799,16 +823,7 @@ PetscErrorCode SPSolverSetFromOptions(SPSolver s)
   PetscCall(SPSolverSetUpAccept(s));
   PetscCall(SPSolverSetUpDirect(s));
   PetscCall(SPSolverSetUpPCLag(s));
-  {
-    KSP      ksp;
-    PetscInt maxit, kmaxit;
-    PetscCall(SNESGetKSP(s->snes, &ksp));
-    PetscCall(KSPGetTolerances(ksp, &s->rtolMin, NULL, NULL, &kmaxit));
-    s->rtolMax = PetscMax(s->rtolMax, s->rtolMin);
-    PetscCall(SNESGetTolerances(s->snes, NULL, NULL, NULL, &maxit, NULL));
-    PetscCheck(maxit >= 1, PetscObjectComm((PetscObject)s->dm), PETSC_ERR_USER_INPUT, "-snes_max_it %" PetscInt_FMT ": a load step needs at least 1 Newton iteration", maxit);
-    PetscCheck(kmaxit >= 1, PetscObjectComm((PetscObject)s->dm), PETSC_ERR_USER_INPUT, "-ksp_max_it %" PetscInt_FMT ": a linear solve needs at least 1 iteration", kmaxit);
-  }
+  PetscCall(CheckLimits(s));
   PetscCall(SPContactIsActive(s->contact, &on));
   if (on) {
     PetscCall(SNESGetLineSearch(s->snes, &ls));

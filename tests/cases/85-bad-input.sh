@@ -98,6 +98,14 @@ unknown line search|input/hertz2d.opts|-snes_linesearch_type nonsense
 no Newton iteration allowed|input/hertz2d.opts|-snes_max_it 0
 negative Newton iteration limit|input/hertz2d.opts|-snes_max_it -1
 no linear iteration allowed|input/hertz2d.opts|-ksp_max_it 0
+PETSc tolerance without a value|input/hertz2d.opts|-ksp_rtol
+PETSc Newton limit without a value|input/hertz2d.opts|-snes_max_it -quiet
+GAMG level option without a value (read at the first solve)|input/hertz2d.opts|-mg_levels_ksp_max_it
+negative Newton relative tolerance|input/hertz2d.opts|-snes_rtol -1
+Newton absolute tolerance not a number|input/hertz2d.opts|-snes_atol nan
+negative Newton step tolerance|input/hertz2d.opts|-snes_stol -1
+negative linear relative tolerance|input/hertz2d.opts|-ksp_rtol -1
+negative linear absolute tolerance|input/hertz2d.opts|-ksp_atol -1e-5
 Young's modulus infinite|input/hertz2d.opts|-material_E inf
 region Young's modulus infinite|input/bimaterial2d.opts|-material_1_E inf
 gap tolerance infinite|input/hertz2d.opts|-contact_gap_tol inf
