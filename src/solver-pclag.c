@@ -1,4 +1,5 @@
-/* The preconditioner (GAMG by default, any but a factorization) kept across a small change of the active set (-solver_pc_lag).
+/* The preconditioner (GAMG by default, any but a factorization) kept across a small change of the
+   active set (-solver_pc_lag).
    With a linear bulk, frictionless and without pairs, the Jacobian is K plus the penalty blocks of
    the active points: a change of the active set changes the rows of the points that opened or
    closed, a perturbation of low rank, while a new preconditioner costs GAMG's Galerkin products
