@@ -193,7 +193,7 @@ PetscErrorCode SPAppSummary(SPApp a)
   PetscCall(SPSolverGetBulkOperator(a->solver, &bulk));
   PetscCall(PetscViewerASCIIPrintf(v, "bulk_operator %s\n", bulk));
   PetscCall(PetscViewerASCIIPrintf(v, "displacement_max %.10e\n", (double)umax));
-  PetscCall(PetscViewerASCIIPrintf(v, "l2_error %.10e\n", hasErr ? (double)err : -1.0));
+  if (hasErr) PetscCall(PetscViewerASCIIPrintf(v, "l2_error %.10e\n", (double)err)); /* -material_mms only */
   PetscCall(SPContactIsActive(a->contact, &on));
   if (on) PetscCall(SPContactView(a->contact, v));
   {
