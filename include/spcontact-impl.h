@@ -413,6 +413,7 @@ struct _n_SPSolver {
   PetscBool           resolve, lastConverged; /* this solve repeats a converged one at the same load (after a shift update) */
   PetscReal           lastLoad, settledFactor;
   PetscBool           measured, measuring; /* -solver_inexact_measured; and this solve's method updates in Newton */
+  PetscBool           updates;             /* this solve's method updates the shifts (shifted, alm; not penalty) */
   PetscReal           lastGap, rhoMeas[2]; /* gap error of the last iterate; the last two measured contractions (0: none) */
   PetscBool           lastSettledUpdate, lastUpdate; /* the last iterate's shifts moved (on a settled active set) */
   PetscBool           refine;                /* -solver_inexact_refine */
