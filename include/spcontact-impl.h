@@ -348,6 +348,7 @@ PETSC_EXTERN PetscErrorCode SPFrictionJumped(SPContact, PetscReal, PetscBool *);
 PETSC_EXTERN PetscErrorCode SPFrictionForces(SPContact, Vec, PetscReal[]);
 /* contact-pairs.c */
 PETSC_EXTERN PetscErrorCode SPContactPairsSetFromOptions(SPContact);
+PETSC_EXTERN PetscErrorCode SPContactCheckMu(MPI_Comm, const char[], PetscReal);
 PETSC_EXTERN PetscErrorCode SPContactPairsCheckLabels(SPContact);
 PETSC_EXTERN PetscErrorCode SPContactPairsSetUp(SPContact);
 PETSC_EXTERN PetscErrorCode SPContactPairsExchange(SPContact, const PetscScalar[]);

@@ -58,7 +58,7 @@ static PetscErrorCode PairSetFromOptions(MPI_Comm comm, PetscInt k, PetscReal mu
   PetscCall(PetscOptionsIntArray("-master_values", "Label values of the master surface (its facets are projected on)", "SPContactPairsSetFromOptions", p->master, &p->nmaster, &hasM));
   PetscCall(PetscOptionsReal("-mu", "Coulomb friction coefficient of the pair (default -contact_friction_mu)", "SPContactPairsSetFromOptions", p->mu, &p->mu, NULL));
   PetscOptionsEnd();
-  PetscCheck(p->mu >= 0.0 && !PetscIsInfOrNanReal(p->mu), comm, PETSC_ERR_USER_INPUT, "-%smu %g: the friction coefficient must be a number >= 0", prefix, (double)p->mu);
+  PetscCall(SPContactCheckMu(comm, prefix, p->mu));
   if (!hasS) p->nslave = 0;
   if (!hasM) p->nmaster = 0;
   *found = hasS || hasM || hasL ? PETSC_TRUE : PETSC_FALSE;

@@ -46,6 +46,14 @@ static PetscErrorCode CheckVector(MPI_Comm comm, const char prefix[], const char
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The friction coefficient read from -<prefix>mu (the run's, an obstacle's or a pair's) */
+PetscErrorCode SPContactCheckMu(MPI_Comm comm, const char prefix[], PetscReal mu)
+{
+  PetscFunctionBeginUser;
+  PetscCheck(mu >= 0.0 && !PetscIsInfOrNanReal(mu), comm, PETSC_ERR_USER_INPUT, "-%smu %g: the friction coefficient must be a number >= 0", prefix, (double)mu);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscErrorCode ObstacleSetFromOptions(MPI_Comm comm, PetscInt i, PetscInt dim, SPObstacle *ob, PetscReal *mu)
 {
   char      prefix[48];
@@ -72,7 +80,7 @@ static PetscErrorCode ObstacleSetFromOptions(MPI_Comm comm, PetscInt i, PetscInt
   PetscCall(CheckVector(comm, prefix, "motion", dim, set, n, ob->motion));
   PetscCall(PetscOptionsReal("-mu", "Coulomb friction coefficient against this obstacle (default -contact_friction_mu)", "SPContactSetFromOptions", *mu, mu, NULL));
   PetscOptionsEnd();
-  PetscCheck(*mu >= 0.0 && !PetscIsInfOrNanReal(*mu), comm, PETSC_ERR_USER_INPUT, "-%smu %g: the friction coefficient must be a number >= 0", prefix, (double)*mu);
+  PetscCall(SPContactCheckMu(comm, prefix, *mu));
   ob->type = (SPObstacleType)type;
   len      = SPNorm(dim, ob->normal);
   PetscCheck(len > 0.0, comm, PETSC_ERR_USER_INPUT, "-%snormal: the normal/axis must be a nonzero vector", prefix);
@@ -183,7 +191,7 @@ PetscErrorCode SPContactSetFromOptions(SPContact c)
   if (!setValues) c->nvalues = 0;
   c->tangent = (SPTangent)tangent;
   if (c->alphaT < 0.0) c->alphaT = c->alpha;
-  PetscCheck(c->mu >= 0.0 && !PetscIsInfOrNanReal(c->mu), comm, PETSC_ERR_USER_INPUT, "-contact_friction_mu %g: the friction coefficient must be a number >= 0", (double)c->mu);
+  PetscCall(SPContactCheckMu(comm, "contact_friction_", c->mu));
   PetscCheck(c->alpha > 0.0, comm, PETSC_ERR_USER_INPUT, "-contact_alpha %g: the penalty factor must be positive", (double)c->alpha);
   PetscCheck(c->alpha >= 1e-3 && c->alpha <= 1e8, comm, PETSC_ERR_USER_INPUT, "-contact_alpha %g: outside 1e-3..1e8 (eps h / E); below, the penetration is of the order of the load over E; above, the Jacobian loses all digits. 10 to 1000 are usual", (double)c->alpha);
   PetscCheck(c->alphaT > 0.0, comm, PETSC_ERR_USER_INPUT, "-contact_friction_alpha %g: the tangential penalty factor must be positive", (double)c->alphaT);
