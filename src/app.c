@@ -32,8 +32,8 @@ static PetscErrorCode LoadingSetFromOptions(SPApp a)
   PetscCall(PetscOptionsReal("-max_wall_time", "Seconds: no new load step starts after this wall time; the run stops keeping its converged steps (0: no limit)", "SPAppSetUp", a->maxWallTime, &a->maxWallTime, NULL));
   PetscCall(PetscOptionsBool("-quiet", "No progress line per load step on stdout (the summary is still printed)", "SPAppSetUp", a->quiet, &a->quiet, NULL));
   PetscOptionsEnd();
-  PetscCheck(a->minIncrement > 0.0 && a->minIncrement <= 1.0, a->comm, PETSC_ERR_USER_INPUT, "-load_min_increment %g: must be in (0, 1] (a load-factor increment)", (double)a->minIncrement);
-  PetscCheck(a->maxWallTime >= 0.0, a->comm, PETSC_ERR_USER_INPUT, "-max_wall_time %g: must be >= 0 seconds (0: no limit)", (double)a->maxWallTime);
+  PetscCheck(a->minIncrement > 0.0 && a->minIncrement <= 1.0, a->comm, PETSC_ERR_USER_INPUT, "-load_min_increment %.6g: must be in (0, 1] (a load-factor increment)", (double)a->minIncrement);
+  PetscCheck(a->maxWallTime >= 0.0, a->comm, PETSC_ERR_USER_INPUT, "-max_wall_time %.6g: must be >= 0 seconds (0: no limit)", (double)a->maxWallTime);
   PetscCheck(a->loadSteps >= 1, a->comm, PETSC_ERR_USER_INPUT, "-load_steps %" PetscInt_FMT ": need at least one load step", a->loadSteps);
   PetscCheck(a->growAfter >= 0, a->comm, PETSC_ERR_USER_INPUT, "-load_grow_after %" PetscInt_FMT ": must be >= 0 (0: the increment never grows back)", a->growAfter);
   PetscCheck(a->maxCutbacks >= 0, a->comm, PETSC_ERR_USER_INPUT, "-load_max_cutbacks %" PetscInt_FMT ": must be >= 0", a->maxCutbacks);

@@ -174,7 +174,7 @@ PetscErrorCode SPContactComputeAreas(SPContact c)
   }
   PetscCall(MPIU_Allreduce(MPI_IN_PLACE, range, 2, MPIU_REAL, MPIU_MAX, PetscObjectComm((PetscObject)c->dm)));
   c->alphaMax = range[1];
-  PetscCheck(c->penalty <= 0.0 || range[1] == 0.0 || (-range[0] >= 1e-3 && range[1] <= 1e8), PetscObjectComm((PetscObject)c->dm), PETSC_ERR_USER_INPUT, "-contact_penalty %g: eps h / E is %g..%g at the contact points, outside 1e-3..1e8 (below, the penetration is of the order of the load over E; above, the Jacobian loses all digits); give -contact_alpha (eps = alpha E / h) instead", (double)c->penalty, (double)-range[0], (double)range[1]);
+  PetscCheck(c->penalty <= 0.0 || range[1] == 0.0 || (-range[0] >= 1e-3 && range[1] <= 1e8), PetscObjectComm((PetscObject)c->dm), PETSC_ERR_USER_INPUT, "-contact_penalty %.6g: eps h / E is %.6g..%.6g at the contact points, outside 1e-3..1e8 (below, the penetration is of the order of the load over E; above, the Jacobian loses all digits); give -contact_alpha (eps = alpha E / h) instead", (double)c->penalty, (double)-range[0], (double)range[1]);
   PetscCall(VecRestoreArrayRead(area, &pa));
   PetscCall(VecRestoreArrayRead(meas, &pm));
   PetscCall(VecRestoreArrayRead(count, &pc));

@@ -50,7 +50,7 @@ static PetscErrorCode CheckVector(MPI_Comm comm, const char prefix[], const char
 PetscErrorCode SPContactCheckMu(MPI_Comm comm, const char prefix[], PetscReal mu)
 {
   PetscFunctionBeginUser;
-  PetscCheck(mu >= 0.0 && !PetscIsInfOrNanReal(mu), comm, PETSC_ERR_USER_INPUT, "-%smu %g: the friction coefficient must be a number >= 0", prefix, (double)mu);
+  PetscCheck(mu >= 0.0 && !PetscIsInfOrNanReal(mu), comm, PETSC_ERR_USER_INPUT, "-%smu %.6g: the friction coefficient must be a number >= 0", prefix, (double)mu);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -85,7 +85,7 @@ static PetscErrorCode ObstacleSetFromOptions(MPI_Comm comm, PetscInt i, PetscInt
   len      = SPNorm(dim, ob->normal);
   PetscCheck(len > 0.0, comm, PETSC_ERR_USER_INPUT, "-%snormal: the normal/axis must be a nonzero vector", prefix);
   for (PetscInt d = 0; d < dim; ++d) ob->normal[d] /= len;
-  if (ob->type != SP_OBSTACLE_PLANE) PetscCheck(ob->radius > 0.0, comm, PETSC_ERR_USER_INPUT, "-%sradius %g: a %s needs a radius > 0", prefix, (double)ob->radius, ObstacleTypes[type]);
+  if (ob->type != SP_OBSTACLE_PLANE) PetscCheck(ob->radius > 0.0, comm, PETSC_ERR_USER_INPUT, "-%sradius %.6g: a %s needs a radius > 0", prefix, (double)ob->radius, ObstacleTypes[type]);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -154,7 +154,7 @@ static PetscErrorCode CheckFriction(SPContact c)
   for (PetscInt k = 0; k < c->nob; ++k) on = on || c->obMu[k] > 0.0;
   for (PetscInt k = 0; k < c->npair; ++k) on = on || c->pair[k].mu > 0.0;
   if (!on) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCheck(c->enabled, comm, PETSC_ERR_USER_INPUT, "-contact_friction_mu %g given but the run has no contact: add a slave boundary and an obstacle (-contact_values, -contact_obstacle_0_type) or a pair (-contact_pair_0_slave_values, -contact_pair_0_master_values)", (double)c->mu);
+  PetscCheck(c->enabled, comm, PETSC_ERR_USER_INPUT, "-contact_friction_mu %.6g given but the run has no contact: add a slave boundary and an obstacle (-contact_values, -contact_obstacle_0_type) or a pair (-contact_pair_0_slave_values, -contact_pair_0_master_values)", (double)c->mu);
   for (PetscInt k = 0; SPMethodTable[k]; ++k)
     if (SPMethodTable[k]->friction) {
       PetscCall(PetscStrlcat(ok, ok[0] ? ", " : "", sizeof(ok)));
@@ -192,16 +192,16 @@ PetscErrorCode SPContactSetFromOptions(SPContact c)
   c->tangent = (SPTangent)tangent;
   if (c->alphaT < 0.0) c->alphaT = c->alpha;
   PetscCall(SPContactCheckMu(comm, "contact_friction_", c->mu));
-  PetscCheck(c->alpha > 0.0, comm, PETSC_ERR_USER_INPUT, "-contact_alpha %g: the penalty factor must be positive", (double)c->alpha);
-  PetscCheck(c->alpha >= 1e-3 && c->alpha <= 1e8, comm, PETSC_ERR_USER_INPUT, "-contact_alpha %g: outside 1e-3..1e8 (eps h / E); below, the penetration is of the order of the load over E; above, the Jacobian loses all digits. 10 to 1000 are usual", (double)c->alpha);
-  PetscCheck(c->alphaT > 0.0, comm, PETSC_ERR_USER_INPUT, "-contact_friction_alpha %g: the tangential penalty factor must be positive", (double)c->alphaT);
-  PetscCheck(c->alphaT >= 1e-3 && c->alphaT <= 1e8, comm, PETSC_ERR_USER_INPUT, "-contact_friction_alpha %g: outside 1e-3..1e8 (eps_T h / E)", (double)c->alphaT);
-  PetscCheck(c->jumpWait == 0.0 || (c->jumpWait >= 1.0 && !PetscIsInfOrNanReal(c->jumpWait)), comm, PETSC_ERR_USER_INPUT, "-contact_friction_jump_wait %g: must be 0 (off) or a growth factor >= 1", (double)c->jumpWait);
-  PetscCheck(c->creepRtol > 0.0 && c->slipRtol > 0.0 && !PetscIsInfOrNanReal(c->creepRtol) && !PetscIsInfOrNanReal(c->slipRtol), comm, PETSC_ERR_USER_INPUT, "-contact_friction_creep_rtol %g, -contact_friction_slip_rtol %g: must be positive finite numbers", (double)c->creepRtol, (double)c->slipRtol);
-  PetscCheck(!setPenalty || (c->penalty > 0.0 && !PetscIsInfOrNanReal(c->penalty)), comm, PETSC_ERR_USER_INPUT, "-contact_penalty %g: the penalty must be a positive number", (double)c->penalty);
-  PetscCheck(!c->gapTolSet || (c->gapTol > 0.0 && !PetscIsInfOrNanReal(c->gapTol)), comm, PETSC_ERR_USER_INPUT, "-contact_gap_tol %g: must be a positive finite length", (double)c->gapTol);
-  PetscCheck(c->gapRtol > 0.0 && c->gapRtol < 1.0, comm, PETSC_ERR_USER_INPUT, "-contact_gap_rtol %g: must be in (0, 1) (a fraction of the contact facet size)", (double)c->gapRtol);
-  PetscCheck(c->stepCap >= 0.0 && !PetscIsInfOrNanReal(c->stepCap), comm, PETSC_ERR_USER_INPUT, "-contact_step_cap %g: must be a finite number >= 0 (0 disables the step control)", (double)c->stepCap);
+  PetscCheck(c->alpha > 0.0, comm, PETSC_ERR_USER_INPUT, "-contact_alpha %.6g: the penalty factor must be positive", (double)c->alpha);
+  PetscCheck(c->alpha >= 1e-3 && c->alpha <= 1e8, comm, PETSC_ERR_USER_INPUT, "-contact_alpha %.6g: outside 1e-3..1e8 (eps h / E); below, the penetration is of the order of the load over E; above, the Jacobian loses all digits. 10 to 1000 are usual", (double)c->alpha);
+  PetscCheck(c->alphaT > 0.0, comm, PETSC_ERR_USER_INPUT, "-contact_friction_alpha %.6g: the tangential penalty factor must be positive", (double)c->alphaT);
+  PetscCheck(c->alphaT >= 1e-3 && c->alphaT <= 1e8, comm, PETSC_ERR_USER_INPUT, "-contact_friction_alpha %.6g: outside 1e-3..1e8 (eps_T h / E)", (double)c->alphaT);
+  PetscCheck(c->jumpWait == 0.0 || (c->jumpWait >= 1.0 && !PetscIsInfOrNanReal(c->jumpWait)), comm, PETSC_ERR_USER_INPUT, "-contact_friction_jump_wait %.6g: must be 0 (off) or a growth factor >= 1", (double)c->jumpWait);
+  PetscCheck(c->creepRtol > 0.0 && c->slipRtol > 0.0 && !PetscIsInfOrNanReal(c->creepRtol) && !PetscIsInfOrNanReal(c->slipRtol), comm, PETSC_ERR_USER_INPUT, "-contact_friction_creep_rtol %.6g, -contact_friction_slip_rtol %.6g: must be positive finite numbers", (double)c->creepRtol, (double)c->slipRtol);
+  PetscCheck(!setPenalty || (c->penalty > 0.0 && !PetscIsInfOrNanReal(c->penalty)), comm, PETSC_ERR_USER_INPUT, "-contact_penalty %.6g: the penalty must be a positive number", (double)c->penalty);
+  PetscCheck(!c->gapTolSet || (c->gapTol > 0.0 && !PetscIsInfOrNanReal(c->gapTol)), comm, PETSC_ERR_USER_INPUT, "-contact_gap_tol %.6g: must be a positive finite length", (double)c->gapTol);
+  PetscCheck(c->gapRtol > 0.0 && c->gapRtol < 1.0, comm, PETSC_ERR_USER_INPUT, "-contact_gap_rtol %.6g: must be in (0, 1) (a fraction of the contact facet size)", (double)c->gapRtol);
+  PetscCheck(c->stepCap >= 0.0 && !PetscIsInfOrNanReal(c->stepCap), comm, PETSC_ERR_USER_INPUT, "-contact_step_cap %.6g: must be a finite number >= 0 (0 disables the step control)", (double)c->stepCap);
   for (c->nob = 0; c->nob < SP_MAX_OBSTACLES; ++c->nob) {
     char      name[48];
     PetscBool has;

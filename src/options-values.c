@@ -50,22 +50,27 @@ static PetscBool InFamily(const char name[], const char *const families[], size_
   return PETSC_FALSE;
 }
 
-/* One option name of the database: refused if it needs a value and has none. spcontact's (not a
-   flag) only once read: a name that was not read is misspelt, and the unused-option report names
-   it. PETSc's numeric ones whether read or not: GAMG's level options are read at the first solve,
-   after this check */
-static PetscErrorCode CheckOne(MPI_Comm comm, const char name[])
+/* Whether the option whose name ends just before rest (in PetscOptionsGetAll's string) has a value:
+   a next token that does not start another option. Reading the string marks nothing used. */
+static PetscBool HasValue(const char rest[])
 {
-  const PetscBool ours = InFamily(name, Families, PETSC_STATIC_ARRAY_LENGTH(Families));
-  PetscBool       used = PETSC_TRUE, set;
-  char            value[8];
+  return rest[0] == ' ' && rest[1] && !(rest[1] == '-' && isalpha((unsigned char)rest[2])) ? PETSC_TRUE : PETSC_FALSE;
+}
+
+/* One option name of the database (rest: the string after it): refused if it needs a value and
+   has none. spcontact's (not a flag) only once read: a name that was not read is misspelt, and the
+   unused-option report names it. PETSc's numeric ones whether read or not (GAMG's level options
+   are read at the first solve, after this check), from the string alone, so that one not read
+   stays in the unused-option report */
+static PetscErrorCode CheckOne(MPI_Comm comm, const char name[], const char rest[])
+{
+  PetscBool used = PETSC_FALSE;
 
   PetscFunctionBeginUser;
-  if (ours ? IsFlag(name) : !(InFamily(name, PetscFamilies, PETSC_STATIC_ARRAY_LENGTH(PetscFamilies)) && HasTail(name, NumericTails, PETSC_STATIC_ARRAY_LENGTH(NumericTails)))) PetscFunctionReturn(PETSC_SUCCESS);
-  if (ours) PetscCall(PetscOptionsUsed(NULL, name + 1, &used)); /* the database keeps names without the dash */
-  if (!used) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCall(PetscOptionsGetString(NULL, NULL, name, value, sizeof(value), &set));
-  PetscCheck(!set || value[0], comm, PETSC_ERR_USER_INPUT, "%s needs a value (-help gives its meaning and default)", name);
+  if (InFamily(name, Families, PETSC_STATIC_ARRAY_LENGTH(Families))) {
+    if (!IsFlag(name)) PetscCall(PetscOptionsUsed(NULL, name + 1, &used)); /* the database keeps names without the dash */
+  } else used = InFamily(name, PetscFamilies, PETSC_STATIC_ARRAY_LENGTH(PetscFamilies)) && HasTail(name, NumericTails, PETSC_STATIC_ARRAY_LENGTH(NumericTails)) ? PETSC_TRUE : PETSC_FALSE;
+  PetscCheck(!used || HasValue(rest), comm, PETSC_ERR_USER_INPUT, "%s needs a value (-help gives its meaning and default)", name);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -81,7 +86,7 @@ PetscErrorCode SPOptionsCheckValues(MPI_Comm comm)
     if (!SPOptionsNameAt(all, i, "-") || !isalpha((unsigned char)all[i + 1])) continue;
     n = SPOptionsNameCopy(all, i, name, sizeof(name));
     for (size_t j = 0; j < n; ++j) name[j] = (char)tolower((unsigned char)name[j]); /* PETSc's names ignore case */
-    PetscCall(CheckOne(comm, name));
+    PetscCall(CheckOne(comm, name, all + i + n));
     i += n - 1;
   }
   PetscCall(PetscFree(all));

@@ -101,8 +101,8 @@ static PetscErrorCode RegionSetFromOptions(SPProblem p, PetscInt k, PetscBool gi
   PetscOptionsEnd();
   if (!given) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCheck(set, comm, PETSC_ERR_USER_INPUT, "-material_%" PetscInt_FMT "_label_value: give the \"%s\" value of region material %" PetscInt_FMT " (other -material_%" PetscInt_FMT "_* options are set)", k, p->matLabel, k, k);
-  PetscCheck(m->E > 0.0 && !PetscIsInfOrNanReal(m->E), comm, PETSC_ERR_USER_INPUT, "-material_%" PetscInt_FMT "_E %g: Young's modulus must be a positive finite number", k, (double)m->E);
-  PetscCheck(m->nu > -1.0 && m->nu < 0.5, comm, PETSC_ERR_USER_INPUT, "-material_%" PetscInt_FMT "_nu %g: Poisson's ratio must satisfy -1 < nu < 0.5", k, (double)m->nu);
+  PetscCheck(m->E > 0.0 && !PetscIsInfOrNanReal(m->E), comm, PETSC_ERR_USER_INPUT, "-material_%" PetscInt_FMT "_E %.6g: Young's modulus must be a positive finite number", k, (double)m->E);
+  PetscCheck(m->nu > -1.0 && m->nu < 0.5, comm, PETSC_ERR_USER_INPUT, "-material_%" PetscInt_FMT "_nu %.6g: Poisson's ratio must satisfy -1 < nu < 0.5", k, (double)m->nu);
   PetscCall(FindLaw(m->lawName, &m->law, list, sizeof(list)));
   PetscCheck(m->law, comm, PETSC_ERR_USER_INPUT, "-material_%" PetscInt_FMT "_law %s: unknown material law (available: %s)", k, m->lawName, list);
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -122,8 +122,8 @@ PetscErrorCode SPProblemSetFromOptions(SPProblem p)
   PetscCall(PetscOptionsString("-material_label", "Cell label whose values -material_<k>_label_value select the region materials (gmsh physical surfaces/volumes)", "SPProblemSetFromOptions", p->matLabel, p->matLabel, sizeof(p->matLabel), NULL));
   PetscCall(PetscOptionsReal("-material_mms", "Verification: amplitude of the manufactured body force/solution on the unit box (0 = off)", "SPProblemSetFromOptions", p->mmsAmp, &p->mmsAmp, NULL));
   PetscOptionsEnd();
-  PetscCheck(p->E > 0.0 && !PetscIsInfOrNanReal(p->E), comm, PETSC_ERR_USER_INPUT, "-material_E %g: Young's modulus must be a positive finite number", (double)p->E);
-  PetscCheck(p->nu > -1.0 && p->nu < 0.5, comm, PETSC_ERR_USER_INPUT, "-material_nu %g: Poisson's ratio must satisfy -1 < nu < 0.5", (double)p->nu);
+  PetscCheck(p->E > 0.0 && !PetscIsInfOrNanReal(p->E), comm, PETSC_ERR_USER_INPUT, "-material_E %.6g: Young's modulus must be a positive finite number", (double)p->E);
+  PetscCheck(p->nu > -1.0 && p->nu < 0.5, comm, PETSC_ERR_USER_INPUT, "-material_nu %.6g: Poisson's ratio must satisfy -1 < nu < 0.5", (double)p->nu);
   /* region materials -material_<k>_*, k = 0..7 (gaps allowed) */
   p->nmat = 0;
   PetscCall(RegionsGiven(comm, given));

@@ -780,15 +780,15 @@ PetscErrorCode SPSolverSetFromOptions(SPSolver s)
   PetscCall(PetscOptionsBool("-solver_fast_prealloc", "First-order mesh: preallocate the matrix from vertex adjacency and build the rigid-body modes from vertex coordinates (false: DMCreateMatrix, DMPlexCreateRigidBody)", "SPSolverSetFromOptions", prealloc, &prealloc, NULL));
   PetscCall(PetscOptionsBool("-solver_gamg_shared_graph", "Frictionless small strain without contact pairs (a symmetric matrix, graph not filtered): GAMG aggregates on the system matrix itself instead of PETSc's copy of it (same aggregates, one matrix less at the peak; false: PETSc's copy). With pairs or friction the graph is PETSc's filtered copy (-pc_gamg_threshold 0)", "SPSolverSetFromOptions", share, &share, NULL));
   PetscOptionsEnd();
-  PetscCheck(s->atolRel >= 0.0 && s->atolRel < 1.0, PetscObjectComm((PetscObject)s->dm), PETSC_ERR_USER_INPUT, "-solver_atol_rel %g: must be in [0, 1)", (double)s->atolRel);
-  PetscCheck(s->acceptRtol >= 0.0 && s->acceptRtol < 1.0, PetscObjectComm((PetscObject)s->dm), PETSC_ERR_USER_INPUT, "-solver_linear_accept %g: must be in [0, 1) (0: a linear solve short of its tolerance fails the Newton solve)", (double)s->acceptRtol);
+  PetscCheck(s->atolRel >= 0.0 && s->atolRel < 1.0, PetscObjectComm((PetscObject)s->dm), PETSC_ERR_USER_INPUT, "-solver_atol_rel %.6g: must be in [0, 1)", (double)s->atolRel);
+  PetscCheck(s->acceptRtol >= 0.0 && s->acceptRtol < 1.0, PetscObjectComm((PetscObject)s->dm), PETSC_ERR_USER_INPUT, "-solver_linear_accept %.6g: must be in [0, 1) (0: a linear solve short of its tolerance fails the Newton solve)", (double)s->acceptRtol);
   PetscCheck(s->directIts >= 0, PetscObjectComm((PetscObject)s->dm), PETSC_ERR_USER_INPUT, "-solver_direct_switch %" PetscInt_FMT ": must be >= 0 (0: never switch to a direct solver)", s->directIts);
-  PetscCheck(s->pcLag >= 0.0 && s->pcLag < PETSC_INFINITY, PetscObjectComm((PetscObject)s->dm), PETSC_ERR_USER_INPUT, "-solver_pc_lag %g: must be >= 0 and finite (0: a new preconditioner with every new Jacobian)", (double)s->pcLag);
+  PetscCheck(s->pcLag >= 0.0 && s->pcLag < PETSC_INFINITY, PetscObjectComm((PetscObject)s->dm), PETSC_ERR_USER_INPUT, "-solver_pc_lag %.6g: must be >= 0 and finite (0: a new preconditioner with every new Jacobian)", (double)s->pcLag);
   PetscCheck(s->stallIts >= 0, PetscObjectComm((PetscObject)s->dm), PETSC_ERR_USER_INPUT, "-solver_stall_its %" PetscInt_FMT ": must be >= 0 (0: no stagnation test)", s->stallIts);
   PetscCheck(s->jacReuseMax >= 0, PetscObjectComm((PetscObject)s->dm), PETSC_ERR_USER_INPUT, "-solver_jacobian_reuse %" PetscInt_FMT ": must be >= 0 (0: assemble every Newton iteration)", s->jacReuseMax);
-  PetscCheck(s->rtolMax > 0.0 && s->rtolMax < 1.0, PetscObjectComm((PetscObject)s->dm), PETSC_ERR_USER_INPUT, "-solver_inexact_rtol %g: must be in (0, 1) (1e-3 is the default; -solver_inexact false for exact solves)", (double)s->rtolMax);
-  PetscCheck(s->rtolSearch > 0.0 && s->rtolSearch < 1.0, PetscObjectComm((PetscObject)s->dm), PETSC_ERR_USER_INPUT, "-solver_inexact_rtol_search %g: must be in (0, 1) (1e-2 is the default)", (double)s->rtolSearch);
-  PetscCheck(s->settledFactor > 0.0 && s->settledFactor <= 1.0, PetscObjectComm((PetscObject)s->dm), PETSC_ERR_USER_INPUT, "-solver_inexact_settled %g: must be in (0, 1]", (double)s->settledFactor);
+  PetscCheck(s->rtolMax > 0.0 && s->rtolMax < 1.0, PetscObjectComm((PetscObject)s->dm), PETSC_ERR_USER_INPUT, "-solver_inexact_rtol %.6g: must be in (0, 1) (1e-3 is the default; -solver_inexact false for exact solves)", (double)s->rtolMax);
+  PetscCheck(s->rtolSearch > 0.0 && s->rtolSearch < 1.0, PetscObjectComm((PetscObject)s->dm), PETSC_ERR_USER_INPUT, "-solver_inexact_rtol_search %.6g: must be in (0, 1) (1e-2 is the default)", (double)s->rtolSearch);
+  PetscCheck(s->settledFactor > 0.0 && s->settledFactor <= 1.0, PetscObjectComm((PetscObject)s->dm), PETSC_ERR_USER_INPUT, "-solver_inexact_settled %.6g: must be in (0, 1]", (double)s->settledFactor);
   if (testJ) s->jacReuseMax = 0; /* -snes_test_jacobian compares the assembled Jacobian at every iterate */
   PetscCall(PetscOptionsHasName(NULL, NULL, "-snes_atol", &s->userAtol));
   PetscCall(SetUpMatrix(s, prealloc, share));
