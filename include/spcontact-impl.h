@@ -346,9 +346,10 @@ PETSC_EXTERN PetscBool      SPFrictionConverged(SPContact);
 PETSC_EXTERN PetscErrorCode SPFrictionSettled(SPContact, PetscBool *);
 PETSC_EXTERN PetscErrorCode SPFrictionJumped(SPContact, PetscReal, PetscBool *);
 PETSC_EXTERN PetscErrorCode SPFrictionForces(SPContact, Vec, PetscReal[]);
+/* contact.c: the friction coefficient of -<prefix>mu checked (the run's, an obstacle's, a pair's) */
+PETSC_EXTERN PetscErrorCode SPContactCheckMu(MPI_Comm, const char[], PetscReal);
 /* contact-pairs.c */
 PETSC_EXTERN PetscErrorCode SPContactPairsSetFromOptions(SPContact);
-PETSC_EXTERN PetscErrorCode SPContactCheckMu(MPI_Comm, const char[], PetscReal);
 PETSC_EXTERN PetscErrorCode SPContactPairsCheckLabels(SPContact);
 PETSC_EXTERN PetscErrorCode SPContactPairsSetUp(SPContact);
 PETSC_EXTERN PetscErrorCode SPContactPairsExchange(SPContact, const PetscScalar[]);
