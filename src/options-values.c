@@ -64,13 +64,14 @@ static PetscBool HasValue(const char rest[])
    stays in the unused-option report */
 static PetscErrorCode CheckOne(MPI_Comm comm, const char name[], const char rest[])
 {
-  PetscBool used = PETSC_FALSE;
+  PetscBool check;
 
   PetscFunctionBeginUser;
   if (InFamily(name, Families, PETSC_STATIC_ARRAY_LENGTH(Families))) {
-    if (!IsFlag(name)) PetscCall(PetscOptionsUsed(NULL, name + 1, &used)); /* the database keeps names without the dash */
-  } else used = InFamily(name, PetscFamilies, PETSC_STATIC_ARRAY_LENGTH(PetscFamilies)) && HasTail(name, NumericTails, PETSC_STATIC_ARRAY_LENGTH(NumericTails)) ? PETSC_TRUE : PETSC_FALSE;
-  PetscCheck(!used || HasValue(rest), comm, PETSC_ERR_USER_INPUT, "%s needs a value (-help gives its meaning and default)", name);
+    check = IsFlag(name) ? PETSC_FALSE : PETSC_TRUE;
+    if (check) PetscCall(PetscOptionsUsed(NULL, name + 1, &check)); /* the database keeps names without the dash */
+  } else check = InFamily(name, PetscFamilies, PETSC_STATIC_ARRAY_LENGTH(PetscFamilies)) && HasTail(name, NumericTails, PETSC_STATIC_ARRAY_LENGTH(NumericTails)) ? PETSC_TRUE : PETSC_FALSE;
+  PetscCheck(!check || HasValue(rest), comm, PETSC_ERR_USER_INPUT, "%s needs a value (-help gives its meaning and default)", name);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

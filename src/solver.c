@@ -704,9 +704,10 @@ static PetscErrorCode SetUpMatrix(SPSolver s, PetscBool prealloc, PetscBool shar
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* PETSc's Newton and Krylov limits as read from the options, refused before the solve when no
-   solve could meet them (PETSc's option readers take a negative tolerance or none at all) */
-static PetscErrorCode CheckLimits(SPSolver s)
+/* PETSc's Newton and Krylov limits as read from the options: the inexact Newton's range starts at
+   -ksp_rtol, and limits no solve could meet are refused before the solve (PETSc's option readers
+   take a negative tolerance) */
+static PetscErrorCode ReadLimits(SPSolver s)
 {
   MPI_Comm  comm = PetscObjectComm((PetscObject)s->dm);
   KSP       ksp;
@@ -827,7 +828,7 @@ PetscErrorCode SPSolverSetFromOptions(SPSolver s)
   PetscCall(SPSolverSetUpAccept(s));
   PetscCall(SPSolverSetUpDirect(s));
   PetscCall(SPSolverSetUpPCLag(s));
-  PetscCall(CheckLimits(s));
+  PetscCall(ReadLimits(s));
   PetscCall(SPContactIsActive(s->contact, &on));
   if (on) {
     PetscCall(SNESGetLineSearch(s->snes, &ls));
