@@ -425,6 +425,8 @@ struct _n_SPSolver {
   PetscBool           inexactInner;          /* -solver_inexact_inner (methods that update after a converged solve) */
   PetscReal           innerTarget, solveGap[2]; /* this iterate's inner-solve target (0: the residual target alone); gap error after the load step's last two converged solves (0: none) */
   PetscInt            directIts;     /* -solver_direct_switch: a 2D solve with more linear iterations switches to a factorization (solver-direct.c; 0: never) */
+  PetscInt            directDofs;    /* -solver_direct_dofs: a 2D run with at most this many dofs factors from the start */
+  PetscBool           directStart;   /* this run factors from the start */
   PetscBool           directAllowed; /* this run may still switch */
   PetscInt            directStep;    /* the load step of the switch (0: none) */
   PetscReal           pcLag;         /* -solver_pc_lag: a new Jacobian keeps the preconditioner while the changed points are at most this fraction of its active points (solver-pclag.c; 0: never) */

@@ -1,39 +1,27 @@
-/* A 2D run whose iterative linear solves struggle goes on with a sparse direct solver.
-   At high alpha the penalty entries make the system ill-conditioned, and on two bodies GAMG's
-   aggregates cannot follow them: F2 (Cattaneo-Mindlin, friction) at alpha 1000 took about 160 s
-   of GMRES with up to 2000 iterations per solve, B6 (two discs) at alpha 1000 10141 CG iterations
-   for 39 Newton iterations. A 2D factorization is cheap (nested dissection: fill n log n), so once
-   one linear solve takes more than -solver_direct_switch iterations, or fails, the rest of the run
-   factors the Jacobian (LU, MUMPS; PETSc's own LU on one process without MUMPS): F2 at alpha 1000
-   in 19 s, B6 in 5 s, the same Newton iterations within 2. The default 100 is about three times
-   the break-even at 2e4 dofs (a factorization costs 30 to 40 Krylov iterations there): it also
-   takes F2 at alpha 100 from 22.6 to 10.7 s, and leaves every run at alpha 10 iterative. Not in
-   3D, where a factorization with Debian's reference BLAS costs far more than the iterations it
-   saves (B3, 15887 dofs: 20 s against 2.5 s), and not when the user chose the solver (-ksp_type
-   or -pc_type). The factorization is reused with the Jacobian (Jacobian reuse). A restart resumes
-   with the solver of the interrupted run (the switch's step is in the restart data). */
+/* 2D runs factor their Jacobian with a sparse direct solver: small ones from the start, larger
+   ones once the iterative solve struggles.
+   A 2D factorization is cheap (nested dissection: fill n log n). With an optimized BLAS under
+   MUMPS (OpenBLAS, which scripts/setup-deps.sh installs) it beats CG/GMRES + GAMG at every 2D
+   size measured, 1e4 to 6e5 dofs, because the Jacobian is reused across shift updates and a
+   factorization makes every Newton step exact: B2 (9690 dofs) 0.27 -> 0.22 s, B2 refined twice
+   (1.5e5 dofs) 21.4 -> 8.3 s, F2 (Cattaneo-Mindlin, friction, 1.8e4 dofs) 21.8 -> 7.0 s, B6 (two
+   discs) 1.54 -> 1.26 s (doc/performance.md, "2D: a factorization from the start"). So a 2D run
+   with at most -solver_direct_dofs displacement dofs factors from its first solve. A larger one
+   starts iterative, and once one linear solve takes more than -solver_direct_switch iterations,
+   or fails, the rest of the run factors: at high alpha the penalty entries make the system
+   ill-conditioned, and on two bodies GAMG's aggregates cannot follow them (F2 at alpha 1000 took
+   about 160 s of GMRES with up to 2000 iterations per solve, B6 at alpha 1000 10141 CG
+   iterations for 39 Newton iterations). Always LU (MUMPS; PETSc's own LU on one process without
+   MUMPS, for the switch only): pairs and friction make the Jacobian non-symmetric. Not in 3D,
+   where a factorization costs more than the iterations it saves (B3, 15887 dofs: 4.7 s against
+   2.5 s with OpenBLAS, 20 s with the reference BLAS), and not when the user chose the solver
+   (-ksp_type or -pc_type); -solver_direct_switch 0 keeps every solve iterative. The
+   factorization is reused with the Jacobian (Jacobian reuse). A restart resumes with the solver
+   of the interrupted run (the switch's step is in the restart data). */
 #include <spcontact-impl.h>
 
 /* After SNESSetFromOptions: whether this run may switch (2D, the solver not the user's, a
    factorization available) */
-PetscErrorCode SPSolverSetUpDirect(SPSolver s)
-{
-  PetscInt    dim;
-  PetscBool   kspSet, pcSet, mumps;
-  PetscMPIInt size;
-
-  PetscFunctionBeginUser;
-  s->directAllowed = PETSC_FALSE;
-  PetscCall(DMGetDimension(s->dm, &dim));
-  PetscCall(PetscOptionsHasName(NULL, NULL, "-ksp_type", &kspSet));
-  PetscCall(PetscOptionsHasName(NULL, NULL, "-pc_type", &pcSet));
-  if (s->directIts <= 0 || dim != 2 || kspSet || pcSet) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCall(MatGetFactorAvailable(s->J, MATSOLVERMUMPS, MAT_FACTOR_LU, &mumps));
-  PetscCallMPI(MPI_Comm_size(PetscObjectComm((PetscObject)s->dm), &size));
-  if (!mumps && size > 1) PetscFunctionReturn(PETSC_SUCCESS);
-  s->directAllowed = PETSC_TRUE;
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
 
 /* The solver from here on: preonly + LU (MUMPS, else PETSc's own on one process) */
 static PetscErrorCode SetDirect(SPSolver s)
@@ -50,6 +38,35 @@ static PetscErrorCode SetDirect(SPSolver s)
   PetscCall(PCSetType(pc, PCLU));
   PetscCall(PCFactorSetMatSolverType(pc, mumps ? MATSOLVERMUMPS : MATSOLVERPETSC));
   s->directAllowed = PETSC_FALSE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* After SNESSetFromOptions: whether this run factors from the start (2D, at most directDofs dofs,
+   MUMPS), or may switch later (2D, a factorization available); neither with the user's solver
+   or -solver_direct_switch 0 */
+PetscErrorCode SPSolverSetUpDirect(SPSolver s)
+{
+  PetscInt    dim, N;
+  PetscBool   kspSet, pcSet, mumps;
+  PetscMPIInt size;
+
+  PetscFunctionBeginUser;
+  s->directAllowed = s->directStart = PETSC_FALSE;
+  PetscCall(DMGetDimension(s->dm, &dim));
+  PetscCall(PetscOptionsHasName(NULL, NULL, "-ksp_type", &kspSet));
+  PetscCall(PetscOptionsHasName(NULL, NULL, "-pc_type", &pcSet));
+  if (s->directIts <= 0 || dim != 2 || kspSet || pcSet) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(MatGetFactorAvailable(s->J, MATSOLVERMUMPS, MAT_FACTOR_LU, &mumps));
+  PetscCall(MatGetSize(s->J, &N, NULL));
+  if (mumps && N <= s->directDofs) {
+    PetscCall(SetDirect(s));
+    s->directStart = PETSC_TRUE;
+    s->directStep  = 1;
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  PetscCallMPI(MPI_Comm_size(PetscObjectComm((PetscObject)s->dm), &size));
+  if (!mumps && size > 1) PetscFunctionReturn(PETSC_SUCCESS);
+  s->directAllowed = PETSC_TRUE;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -73,6 +90,7 @@ static PetscErrorCode SwitchToDirect(SPSolver s, const char *why)
 PetscErrorCode SPSolverResumeDirect(SPSolver s, PetscInt step)
 {
   PetscFunctionBeginUser;
+  if (s->directStart) PetscFunctionReturn(PETSC_SUCCESS); /* direct from the start again (directStep 1) */
   s->directStep = 0;
   if (step <= 0 || !s->directAllowed) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(PetscPrintf(PetscObjectComm((PetscObject)s->dm), "linear solver: the sparse direct solver (LU) of the interrupted run, from its load step %" PetscInt_FMT "; -solver_direct_switch 0 keeps the iterative one\n", step));

@@ -655,6 +655,7 @@ PetscErrorCode SPSolverCreate(DM dm, SPProblem problem, SPContact contact, SPLog
   s->jacReuseMax = 5;
   s->acceptRtol  = 1e-3;
   s->directIts   = 100;
+  s->directDofs  = 1000000;
   s->pcLag       = 0.25;
   s->rtolMax     = 1e-3;
   s->rtolSearch  = 1e-2;
@@ -775,7 +776,8 @@ PetscErrorCode SPSolverSetFromOptions(SPSolver s)
   PetscCall(PetscOptionsBool("-solver_inexact_refine", "Inexact Newton with the measured contraction (shifted): a step that needs the tight tolerance only because it may feed a shift update before the contraction is measured (a solve's first step, a settled step before the first measurement) is solved to the loosest tolerance and continued to the tight one only if the shifts then move (false: solved tight at once)", "SPSolverSetFromOptions", s->refine, &s->refine, NULL));
   PetscCall(PetscOptionsBool("-solver_inexact_inner", "Inexact Newton, methods that update the shifts after a converged solve (alm), frictionless: a solve counts as converged on a settled active set once |F| <= 0.1 rho |dF| (dF: the forces the next update adds, rho: the update's contraction), the last one (gap tolerance met) at the residual target; its steps are solved no tighter than that needs (false: every solve to the residual target)", "SPSolverSetFromOptions", s->inexactInner, &s->inexactInner, NULL));
   PetscCall(PetscOptionsReal("-solver_linear_accept", "A linear solve that stops short of its tolerance (its iteration limit, a GMRES breakdown) counts as converged if its true residual |b - A x| is at most this x |b| (0: never; it then fails the Newton solve)", "SPSolverSetFromOptions", s->acceptRtol, &s->acceptRtol, NULL));
-  PetscCall(PetscOptionsInt("-solver_direct_switch", "2D, solver not chosen by -ksp_type/-pc_type: once a linear solve takes more than this many iterations, or fails, the rest of the run factors the Jacobian (LU, MUMPS) (0: never)", "SPSolverSetFromOptions", s->directIts, &s->directIts, NULL));
+  PetscCall(PetscOptionsInt("-solver_direct_switch", "2D, solver not chosen by -ksp_type/-pc_type, more dofs than -solver_direct_dofs: once a linear solve takes more than this many iterations, or fails, the rest of the run factors the Jacobian (LU, MUMPS) (0: never a direct solver, not from the start either)", "SPSolverSetFromOptions", s->directIts, &s->directIts, NULL));
+  PetscCall(PetscOptionsInt("-solver_direct_dofs", "2D, solver not chosen by -ksp_type/-pc_type, MUMPS available: a run with at most this many displacement dofs factors its Jacobian from the start (LU, MUMPS; README Performance) (0: iterative from the start)", "SPSolverSetFromOptions", s->directDofs, &s->directDofs, NULL));
   PetscCall(PetscOptionsReal("-solver_pc_lag", "Linear material, frictionless, no pairs, iterative solver: a new Jacobian keeps the preconditioner (GAMG by default, or the -pc_type given; not a factorization) while the points whose active state changed since its build are at most this fraction of its active points, and while solves with it converge at least 2/3 as fast per decade as the first one (README Performance; 0: a new preconditioner with every new Jacobian)", "SPSolverSetFromOptions", s->pcLag, &s->pcLag, NULL));
   PetscCall(PetscOptionsInt("-solver_stall_its", "Stop a Newton solve after this many iterations without a 1% decrease of the residual or the gap error (0: never)", "SPSolverSetFromOptions", s->stallIts, &s->stallIts, NULL));
   PetscCall(PetscOptionsBool("-solver_fast_prealloc", "First-order mesh: preallocate the matrix from vertex adjacency and build the rigid-body modes from vertex coordinates (false: DMCreateMatrix, DMPlexCreateRigidBody)", "SPSolverSetFromOptions", prealloc, &prealloc, NULL));
@@ -783,6 +785,7 @@ PetscErrorCode SPSolverSetFromOptions(SPSolver s)
   PetscOptionsEnd();
   PetscCheck(s->atolRel >= 0.0 && s->atolRel < 1.0, PetscObjectComm((PetscObject)s->dm), PETSC_ERR_USER_INPUT, "-solver_atol_rel %.6g: must be in [0, 1)", (double)s->atolRel);
   PetscCheck(s->acceptRtol >= 0.0 && s->acceptRtol < 1.0, PetscObjectComm((PetscObject)s->dm), PETSC_ERR_USER_INPUT, "-solver_linear_accept %.6g: must be in [0, 1) (0: a linear solve short of its tolerance fails the Newton solve)", (double)s->acceptRtol);
+  PetscCheck(s->directDofs >= 0, PetscObjectComm((PetscObject)s->dm), PETSC_ERR_USER_INPUT, "-solver_direct_dofs %" PetscInt_FMT ": must be >= 0 (0: every 2D run starts iterative)", s->directDofs);
   PetscCheck(s->directIts >= 0, PetscObjectComm((PetscObject)s->dm), PETSC_ERR_USER_INPUT, "-solver_direct_switch %" PetscInt_FMT ": must be >= 0 (0: never switch to a direct solver)", s->directIts);
   PetscCheck(s->pcLag >= 0.0 && s->pcLag < PETSC_INFINITY, PetscObjectComm((PetscObject)s->dm), PETSC_ERR_USER_INPUT, "-solver_pc_lag %.6g: must be >= 0 and finite (0: a new preconditioner with every new Jacobian)", (double)s->pcLag);
   PetscCheck(s->stallIts >= 0, PetscObjectComm((PetscObject)s->dm), PETSC_ERR_USER_INPUT, "-solver_stall_its %" PetscInt_FMT ": must be >= 0 (0: no stagnation test)", s->stallIts);

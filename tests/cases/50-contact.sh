@@ -146,8 +146,9 @@ test_contact_b1_one_update() {
   return $rc
 }
 
-# B2 (input/hertz2d.opts) or B4 at 16^3 (input/indent3d.opts), the default iterative solver
-ab_case_opts() { if [ "$1" = b4 ]; then echo -options_file input/indent3d.opts -dm_plex_box_faces 16,16,16; else echo -options_file input/hertz2d.opts; fi; }
+# B2 (input/hertz2d.opts) or B4 at 16^3 (input/indent3d.opts), the default iterative solver (B2:
+# started iterative, -solver_direct_dofs 0; by default a 2D run this small factors)
+ab_case_opts() { if [ "$1" = b4 ]; then echo -options_file input/indent3d.opts -dm_plex_box_faces 16,16,16; else echo -options_file input/hertz2d.opts -solver_direct_dofs 0; fi; }
 ab_case_force() { if [ "$1" = b4 ]; then echo contact_force_z; else echo contact_force_y; fi; }
 
 # The measured contraction (-solver_inexact_measured, default on): steps that feed a shift update are
@@ -240,8 +241,9 @@ test_contact_inexact_penalty_last_step() {
   return $rc
 }
 
-# A linear solve stopped short of its tolerance (-solver_linear_accept): B2 with CG capped at 12
-# iterations per solve (about 20 to 37 reach each step's tolerance). With -solver_linear_accept
+# A linear solve stopped short of its tolerance (-solver_linear_accept): B2 started iterative
+# (-solver_direct_dofs 0) with CG capped at 12 iterations per solve (about 20 to 37 reach each
+# step's tolerance). With -solver_linear_accept
 # 0.05 the steps whose true residual fell 20x are inexact Newton steps: the same 9 Newton
 # iterations as the default run, the force and peak pressure of the default run, on 1, 2 and 3
 # ranks. With 0 (the check off) and no switch to a direct solver (-solver_direct_switch 0; with it
@@ -249,11 +251,11 @@ test_contact_inexact_penalty_last_step() {
 # the cut-back budget, exit 2, no result passed off as converged.
 test_contact_linear_accept() {
   local rc=0 ref=$CASE_DIR/ref.txt np out
-  spc "$ref" 1 -options_file input/hertz2d.opts -output_dir "$CASE_DIR" -output_name ref || return 1
+  spc "$ref" 1 -options_file input/hertz2d.opts -solver_direct_dofs 0 -output_dir "$CASE_DIR" -output_name ref || return 1
   assert_eq accepted_default "$(sval "$ref" linear_solves_accepted)" 0 || rc=1
   for np in 1 2 3; do
     out=$CASE_DIR/short_$np.txt
-    spc "$out" "$np" -options_file input/hertz2d.opts -ksp_max_it 12 -solver_linear_accept 0.05 -output_dir "$CASE_DIR" -output_name "short$np" || return 1
+    spc "$out" "$np" -options_file input/hertz2d.opts -solver_direct_dofs 0 -ksp_max_it 12 -solver_linear_accept 0.05 -output_dir "$CASE_DIR" -output_name "short$np" || return 1
     echo "ranks $np: newton $(sval "$out" newton_iterations) linear $(sval "$out" linear_iterations) accepted $(sval "$out" linear_solves_accepted)"
     assert_eq "converged_np$np" "$(sval "$out" converged)" yes || rc=1
     assert_ge "accepted_np$np" "$(sval "$out" linear_solves_accepted)" 1 || rc=1

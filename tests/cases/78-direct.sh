@@ -1,9 +1,42 @@
-# The 2D switch to a sparse direct solver (-solver_direct_switch, default 100; src/solver-direct.c):
-# once a linear solve of the default iterative solver takes more than that many iterations, or
-# fails, a 2D run factors its Jacobian (LU, MUMPS) for the rest of the run.
+# The 2D sparse direct solver (src/solver-direct.c): a 2D run with at most -solver_direct_dofs
+# dofs (default 1e6) factors its Jacobian (LU, MUMPS) from the start; a larger one switches once a
+# linear solve of the default iterative solver takes more than -solver_direct_switch iterations
+# (default 100), or fails. The switch is tested here on runs made larger than the threshold by
+# -solver_direct_dofs 0.
 
-# B6 (two discs, one-pass pair) at alpha 1000: CG + GAMG takes up to about 350 iterations per solve
-# there (10141 for 39 Newton iterations on 1 rank). With the switch (the default) the run factors
+# The start: B2 on 1, 2 and 3 ranks factors from load step 1 (summary direct_solver_from_step 1,
+# one linear iteration per Newton iteration), with the Newton iterations of the iterative run
+# (-solver_direct_dofs 0) and its force, peak pressure and active points (1e-8); its penetration
+# below the gap tolerance. Not when the threshold is below B2's 9690 dofs, not with
+# -solver_direct_switch 0 (never a direct solver), not in 3D (B1 3D).
+test_direct_start_b2() {
+  local rc=0 np out ref=$CASE_DIR/iter.txt
+  spc "$ref" 1 -options_file input/hertz2d.opts -solver_direct_dofs 0 -output_dir "$CASE_DIR" -output_name iter -output_fields false || return 1
+  assert_eq from_step_iterative "$(sval "$ref" direct_solver_from_step)" 0 || rc=1
+  for np in 1 2 3; do
+    out=$CASE_DIR/np$np.txt
+    spc "$out" "$np" -options_file input/hertz2d.opts -output_dir "$CASE_DIR" -output_name "np$np" -output_fields false || return 1
+    echo "ranks $np: newton $(sval "$out" newton_iterations) linear $(sval "$out" linear_iterations) (iterative: $(sval "$ref" newton_iterations) / $(sval "$ref" linear_iterations))"
+    assert_eq "converged_np$np" "$(sval "$out" converged)" yes || rc=1
+    assert_eq "from_step_np$np" "$(sval "$out" direct_solver_from_step)" 1 || rc=1
+    assert_eq "one_solve_per_newton_np$np" "$(sval "$out" linear_iterations)" "$(sval "$out" newton_iterations)" || rc=1
+    assert_le "penetration_np$np" "$(sval "$out" contact_max_penetration)" "$(sval "$out" contact_gap_tol)" || rc=1
+    same_summary "$ref" "$out" 0 newton_iterations contact_active_points || rc=1
+    same_summary "$ref" "$out" 1e-8 contact_force_y contact_peak_pressure || rc=1
+  done
+  spc "$CASE_DIR/below.txt" 1 -options_file input/hertz2d.opts -solver_direct_dofs 9000 -output_dir "$CASE_DIR" -output_name below -output_fields false || return 1
+  assert_eq from_step_threshold_below "$(sval "$CASE_DIR/below.txt" direct_solver_from_step)" 0 || rc=1
+  spc "$CASE_DIR/never.txt" 1 -options_file input/hertz2d.opts -solver_direct_switch 0 -output_dir "$CASE_DIR" -output_name never -output_fields false || return 1
+  assert_eq from_step_switch_0 "$(sval "$CASE_DIR/never.txt" direct_solver_from_step)" 0 || rc=1
+  same_summary "$ref" "$CASE_DIR/never.txt" 0 linear_iterations || rc=1
+  spc "$CASE_DIR/b1_3d.txt" 1 -options_file input/block3d.opts -output_dir "$CASE_DIR" -output_name b1 -output_fields false || return 1
+  assert_eq from_step_3d "$(sval "$CASE_DIR/b1_3d.txt" direct_solver_from_step)" 0 || rc=1
+  return $rc
+}
+
+# B6 (two discs, one-pass pair) at alpha 1000, started iterative (-solver_direct_dofs 0): CG + GAMG
+# takes up to about 350 iterations per solve there (10141 for 39 Newton iterations on 1 rank).
+# With the switch (the default) the run factors
 # from its first load step on, with the same Newton iterations (39 / 41 / 41 measured on 1 / 2 / 3
 # ranks, as without it), no cut-back, the step-cap retry as before, the load balanced (1e-8), the
 # peak pressure of the iterative run (1e-8) and far fewer linear iterations (about 500): on 1, 2
@@ -14,7 +47,7 @@ test_direct_switch_b6_alpha1000() {
   assert_eq from_step_off "$(sval "$ref" direct_solver_from_step)" 0 || rc=1
   for np in 1 2 3; do
     out=$CASE_DIR/np$np.txt
-    spc "$out" "$np" -options_file input/hertz2d_twobody.opts -contact_alpha 1000 -output_dir "$CASE_DIR" -output_name "np$np" -output_fields false || return 1
+    spc "$out" "$np" -options_file input/hertz2d_twobody.opts -contact_alpha 1000 -solver_direct_dofs 0 -output_dir "$CASE_DIR" -output_name "np$np" -output_fields false || return 1
     echo "ranks $np: newton $(sval "$out" newton_iterations) linear $(sval "$out" linear_iterations) (iterative only: $(sval "$ref" newton_iterations) / $(sval "$ref" linear_iterations) on 2 ranks)"
     assert_eq "converged_np$np" "$(sval "$out" converged)" yes || rc=1
     assert_eq "cutbacks_np$np" "$(sval "$out" cutbacks)" 0 || rc=1
@@ -28,18 +61,18 @@ test_direct_switch_b6_alpha1000() {
   return $rc
 }
 
-# A failed linear solve in 2D: B2 with CG capped at 12 iterations and no inexact acceptance
-# (-solver_linear_accept 0) fails its first Newton solve (DIVERGED_LINEAR_SOLVE). The run then
-# factors and solves the load step again: converged without a cut-back, the force and peak
-# pressure of the default run (1e-8), on 1, 2 and 3 ranks. With -solver_direct_switch 0 the same
-# run fails into the cut-back budget (test contact_linear_accept).
+# A failed linear solve in 2D: B2 started iterative (-solver_direct_dofs 0) with CG capped at 12
+# iterations and no inexact acceptance (-solver_linear_accept 0) fails its first Newton solve
+# (DIVERGED_LINEAR_SOLVE). The run then factors and solves the load step again: converged without
+# a cut-back, the force and peak pressure of the iterative run (1e-8), on 1, 2 and 3 ranks. With
+# -solver_direct_switch 0 the same run fails into the cut-back budget (test contact_linear_accept).
 test_direct_switch_recovery() {
   local rc=0 np out ref=$CASE_DIR/ref.txt
-  spc "$ref" 1 -options_file input/hertz2d.opts -output_dir "$CASE_DIR" -output_name ref -output_fields false || return 1
-  assert_eq from_step_default_b2 "$(sval "$ref" direct_solver_from_step)" 0 || rc=1
+  spc "$ref" 1 -options_file input/hertz2d.opts -solver_direct_dofs 0 -output_dir "$CASE_DIR" -output_name ref -output_fields false || return 1
+  assert_eq from_step_iterative_b2 "$(sval "$ref" direct_solver_from_step)" 0 || rc=1
   for np in 1 2 3; do
     out=$CASE_DIR/np$np.txt
-    spc "$out" "$np" -options_file input/hertz2d.opts -ksp_max_it 12 -solver_linear_accept 0 -output_dir "$CASE_DIR" -output_name "np$np" -output_fields false || return 1
+    spc "$out" "$np" -options_file input/hertz2d.opts -solver_direct_dofs 0 -ksp_max_it 12 -solver_linear_accept 0 -output_dir "$CASE_DIR" -output_name "np$np" -output_fields false || return 1
     assert_eq "converged_np$np" "$(sval "$out" converged)" yes || rc=1
     assert_eq "cutbacks_np$np" "$(sval "$out" cutbacks)" 0 || rc=1
     assert_eq "from_step_np$np" "$(sval "$out" direct_solver_from_step)" 1 || rc=1
@@ -49,18 +82,19 @@ test_direct_switch_recovery() {
   return $rc
 }
 
-# Where it does not apply: a 3D run (B1 3D with a threshold of 1 iteration), and a 2D run whose
-# solver the user chose (-pc_type gamg given): no switch, the figures of the default run. With a
-# threshold of 1 the default 2D run switches at its first solve and still gives B2's figures.
+# Where the switch does not apply: a 3D run (B1 3D with a threshold of 1 iteration), and a 2D run
+# whose solver the user chose (-pc_type gamg given): no direct solver, the figures of the
+# iterative run. With a threshold of 1 an iterative 2D run switches at its first solve and still
+# gives B2's figures.
 test_direct_switch_scope() {
   local rc=0
   spc "$CASE_DIR/b1_3d.txt" 1 -options_file input/block3d.opts -solver_direct_switch 1 -output_dir "$CASE_DIR" -output_name b1 -output_fields false || return 1
   assert_eq from_step_3d "$(sval "$CASE_DIR/b1_3d.txt" direct_solver_from_step)" 0 || rc=1
-  spc "$CASE_DIR/ref.txt" 1 -options_file input/hertz2d.opts -output_dir "$CASE_DIR" -output_name ref -output_fields false || return 1
+  spc "$CASE_DIR/ref.txt" 1 -options_file input/hertz2d.opts -solver_direct_dofs 0 -output_dir "$CASE_DIR" -output_name ref -output_fields false || return 1
   spc "$CASE_DIR/user.txt" 1 -options_file input/hertz2d.opts -solver_direct_switch 1 -pc_type gamg -output_dir "$CASE_DIR" -output_name user -output_fields false || return 1
   assert_eq from_step_user_solver "$(sval "$CASE_DIR/user.txt" direct_solver_from_step)" 0 || rc=1
   same_summary "$CASE_DIR/ref.txt" "$CASE_DIR/user.txt" 0 newton_iterations linear_iterations || rc=1
-  spc "$CASE_DIR/one.txt" 1 -options_file input/hertz2d.opts -solver_direct_switch 1 -output_dir "$CASE_DIR" -output_name one -output_fields false || return 1
+  spc "$CASE_DIR/one.txt" 1 -options_file input/hertz2d.opts -solver_direct_dofs 0 -solver_direct_switch 1 -output_dir "$CASE_DIR" -output_name one -output_fields false || return 1
   assert_eq from_step_threshold_1 "$(sval "$CASE_DIR/one.txt" direct_solver_from_step)" 1 || rc=1
   assert_eq converged_threshold_1 "$(sval "$CASE_DIR/one.txt" converged)" yes || rc=1
   same_summary "$CASE_DIR/ref.txt" "$CASE_DIR/one.txt" 1e-8 contact_force_y contact_peak_pressure || rc=1

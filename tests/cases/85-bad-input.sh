@@ -75,6 +75,7 @@ minimum increment above 1|input/hertz2d.opts|-load_min_increment 2
 wall time negative|input/hertz2d.opts|-max_wall_time -5
 stall iterations negative|input/hertz2d.opts|-solver_stall_its -1
 direct switch negative|input/hertz2d.opts|-solver_direct_switch -1
+direct dofs negative|input/hertz2d.opts|-solver_direct_dofs -1
 Jacobian reuse negative|input/hertz2d.opts|-solver_jacobian_reuse -1
 inexact tolerance above 1|input/hertz2d.opts|-solver_inexact_rtol 2
 search tolerance zero|input/hertz2d.opts|-solver_inexact_rtol_search 0

@@ -79,14 +79,15 @@ test_restart_after_step_cap_recovery() {
   assert_eq recovery_in_first_half "$(grep -c '^Newton did not converge: the load step again' "$CASE_DIR/half.txt")" 1 || return 1
   assert_eq no_recovery_after_restart "$(grep -c '^Newton did not converge' "$CASE_DIR/rest.txt")" 0
 }
-# A 2D run that switched to the sparse direct solver (-solver_direct_switch 1: at its first solve)
+# A 2D run started iterative (-solver_direct_dofs 0) that switched to the sparse direct solver
+# (-solver_direct_switch 1: at its first solve)
 # resumes with it: one line names the interrupted run's step, the summary key keeps it, and the
 # restarted steps take the Newton iterations of the uninterrupted run (they are LU solves there
 # too); on 1 rank, and interrupted on 2 ranks and resumed on 3 (MUMPS)
 test_restart_direct_solver()     { rs_direct 1; }
 test_restart_direct_solver_2to3() { RS_NP=3 rs_direct 2; }
 rs_direct() {
-  rs_case "$1" -options_file input/hertz2d.opts -solver_direct_switch 1 || return 1
+  rs_case "$1" -options_file input/hertz2d.opts -solver_direct_dofs 0 -solver_direct_switch 1 || return 1
   local rc=0
   assert_eq switched_in_first_half "$(grep -c '^linear solver: cg took' "$CASE_DIR/half.txt")" 1 || rc=1
   assert_eq resumed_line "$(grep -c '^linear solver: the sparse direct solver (LU) of the interrupted run, from its load step 1;' "$CASE_DIR/rest.txt")" 1 || rc=1
