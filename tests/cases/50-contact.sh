@@ -135,13 +135,16 @@ test_contact_shift_contraction() {
 }
 
 # B1 under load control: the floating mode has k_c = 0, one shift update removes the penetration
-# (a property of the exact Newton step: with exact linear solves; the default inexact solves take
-# 4, within the +2 of the solver strategy)
+# (a property of the exact Newton step: with exact linear solves, the default factorization and
+# iterative solves without the inexact Newton; iterative inexact solves take 4, within the +2 of
+# the solver strategy)
 test_contact_b1_one_update() {
   local out=$CASE_DIR/run.txt rc=0
-  spc "$out" 1 -options_file input/block2d.opts -output_dir "$CASE_DIR" -solver_inexact false || return 1
+  spc "$out" 1 -options_file input/block2d.opts -output_dir "$CASE_DIR" -solver_inexact false -solver_direct_dofs 0 || return 1
   assert_close newton_iterations "$(sval "$out" newton_iterations)" 2 0 0 || rc=1
-  spc "$CASE_DIR/inexact.txt" 1 -options_file input/block2d.opts -output_dir "$CASE_DIR" -output_name inexact || return 1
+  spc "$CASE_DIR/direct.txt" 1 -options_file input/block2d.opts -output_dir "$CASE_DIR" -output_name direct || return 1
+  assert_close newton_iterations_direct "$(sval "$CASE_DIR/direct.txt" newton_iterations)" 2 0 0 || rc=1
+  spc "$CASE_DIR/inexact.txt" 1 -options_file input/block2d.opts -solver_direct_dofs 0 -output_dir "$CASE_DIR" -output_name inexact || return 1
   assert_le newton_iterations_inexact "$(sval "$CASE_DIR/inexact.txt" newton_iterations)" 4 || rc=1
   return $rc
 }
@@ -182,7 +185,7 @@ test_contact_inexact_refine() {
     ab_fewer b4 $np linear_iterations || rc=1
   done
   ab_ranks b4 contact_force_z || rc=1
-  ab_runs b1 1 -solver_inexact_refine -options_file input/block2d.opts || return 1
+  ab_runs b1 1 -solver_inexact_refine -options_file input/block2d.opts -solver_direct_dofs 0 || return 1
   same_summary "$CASE_DIR/b1_off_1.txt" "$CASE_DIR/b1_on_1.txt" 0 newton_iterations || rc=1
   same_summary "$CASE_DIR/b1_off_1.txt" "$CASE_DIR/b1_on_1.txt" 1e-10 contact_force_y || rc=1
   return $rc
@@ -289,7 +292,7 @@ test_contact_inexact_inner() {
     done
     ab_ranks $case $(ab_case_force $case) newton_iterations contact_augmentations || rc=1
   done
-  ab_runs b1 1 -solver_inexact_inner -options_file input/block2d.opts -contact_method alm || return 1
+  ab_runs b1 1 -solver_inexact_inner -options_file input/block2d.opts -contact_method alm -solver_direct_dofs 0 || return 1
   local on=$CASE_DIR/b1_on_1.txt n0 l0; n0=$(sval "$CASE_DIR/b1_off_1.txt" newton_iterations); l0=$(sval "$CASE_DIR/b1_off_1.txt" linear_iterations)
   assert_le b1_newton "$(sval "$on" newton_iterations)" $((n0 + 2)) || rc=1
   assert_le b1_linear "$(sval "$on" linear_iterations)" "$(awk -v l="$l0" 'BEGIN{print 1.1 * l}')" || rc=1

@@ -299,18 +299,19 @@ test_friction_f4_patch() {
 }
 
 # The residual target as the linear floor (-solver_target_floor, the default with friction): F4 (the
-# frictional two-pass patch, shifted) and F1b (full slip, shifted) on 1, 2 and 3 ranks against every
+# frictional two-pass patch, shifted) and F1b (full slip, shifted), started iterative (2D runs this
+# small factor by default: -solver_direct_dofs 0), on 1, 2 and 3 ranks against every
 # solve to -ksp_rtol: the same Newton iterations and stick and slip points, the same force and peak
 # pressure (1e-8), the creep within 1e-10 h (F4, h = 0.2), fewer linear iterations (1 rank: F4 479
 # -> 445, F1b 1723 -> 1433); the same Newton count and figures on 1, 2 and 3 ranks.
 test_friction_target_floor() {
   local rc=0 np
   for np in 1 2 3; do
-    ab_runs f4 $np -solver_target_floor -options_file input/friction_patch_4_5.opts -contact_method shifted || return 1
+    ab_runs f4 $np -solver_target_floor -options_file input/friction_patch_4_5.opts -contact_method shifted -solver_direct_dofs 0 || return 1
     ab_same f4 $np contact_force_x newton_iterations contact_stick_points contact_slip_points || rc=1
     assert_le "stick_creep_f4_np$np" "$(sval "$CASE_DIR/f4_on_$np.txt" contact_max_stick_creep)" 2e-11 || rc=1
     ab_fewer f4 $np linear_iterations || rc=1
-    ab_runs f1b $np -solver_target_floor -options_file input/friction_slide2d.opts -contact_method shifted || return 1
+    ab_runs f1b $np -solver_target_floor -options_file input/friction_slide2d.opts -contact_method shifted -solver_direct_dofs 0 || return 1
     ab_same f1b $np contact_tangential_force_x newton_iterations contact_slip_points || rc=1
     ab_fewer f1b $np linear_iterations || rc=1
   done
