@@ -3,9 +3,9 @@
    A 2D factorization is cheap (nested dissection: fill n log n). With an optimized BLAS under
    MUMPS (OpenBLAS, which scripts/setup-deps.sh installs) it beats CG/GMRES + GAMG at every 2D
    size measured, 1e4 to 6e5 dofs, because the Jacobian is reused across shift updates and a
-   factorization makes every Newton step exact: B2 (9690 dofs) 0.27 -> 0.22 s, B2 refined twice
-   (1.5e5 dofs) 21.4 -> 8.3 s, F2 (Cattaneo-Mindlin, friction, 1.8e4 dofs) 21.8 -> 7.0 s, B6 (two
-   discs) 1.54 -> 1.26 s (doc/performance.md, "2D: a factorization from the start"). So a 2D run
+   factorization makes every Newton step exact (1 rank): B2 (9690 dofs) 0.29 -> 0.23 s, B2 refined
+   twice (1.5e5 dofs) 21.8 -> 8.9 s, F2 (Cattaneo-Mindlin, friction, 1.8e4 dofs) 21.9 -> 7.6 s, B6
+   (two discs) 1.77 -> 1.35 s (doc/performance.md, "2D: a factorization from the start"). So a 2D run
    with at most -solver_direct_dofs displacement dofs factors from its first solve. A larger one
    starts iterative, and once one linear solve takes more than -solver_direct_switch iterations,
    or fails, the rest of the run factors: at high alpha the penalty entries make the system
@@ -19,9 +19,6 @@
    factorization is reused with the Jacobian (Jacobian reuse). A restart resumes with the solver
    of the interrupted run (the switch's step is in the restart data). */
 #include <spcontact-impl.h>
-
-/* After SNESSetFromOptions: whether this run may switch (2D, the solver not the user's, a
-   factorization available) */
 
 /* The solver from here on: preonly + LU (MUMPS, else PETSc's own on one process) */
 static PetscErrorCode SetDirect(SPSolver s)
