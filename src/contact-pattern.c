@@ -99,8 +99,12 @@ PetscErrorCode SPContactSetUpJacobian(SPContact c, Vec X, Mat P)
 }
 
 /* Mark (1 in the global vector mark) every row the contact Jacobian can touch: the slave
-   vertices' dofs and the dofs of every master facet (friction anchors are master facets).
-   Constrained dofs are negative and ignored. Collective. */
+   vertices' dofs and the dofs of every master facet (friction anchors are master facets), each
+   rank its owned facets, all of them: the facets it received are only those near its slave
+   points now (the exchange's bounding-box filter), and a facet that comes near later may be
+   one whose pattern is already in J (the point's known facets), so no growth of J would mark
+   it (a body drifting over its master surface: "New nonzero ... caused a malloc" in the contact
+   part C). Constrained dofs are negative and ignored. Collective. */
 PetscErrorCode SPContactMarkRows(SPContact c, Vec mark)
 {
   PetscFunctionBeginUser;
@@ -108,7 +112,7 @@ PetscErrorCode SPContactMarkRows(SPContact c, Vec mark)
     PetscScalar one[SP_FACET_MAXV * 3];
     for (PetscInt k = 0; k < SP_FACET_MAXV * 3; ++k) one[k] = 1.0;
     for (PetscInt i = 0; i < c->n; ++i) PetscCall(VecSetValues(mark, c->dim, c->pt[i].sdof, one, INSERT_VALUES));
-    for (PetscInt f = 0; f < c->nmf; ++f) PetscCall(VecSetValues(mark, c->mf[f].nv * c->dim, c->mf[f].dof, one, INSERT_VALUES));
+    for (PetscInt f = 0; f < c->nmfOwned; ++f) PetscCall(VecSetValues(mark, c->own[f].nv * c->dim, c->own[f].dof, one, INSERT_VALUES));
   }
   PetscCall(VecAssemblyBegin(mark));
   PetscCall(VecAssemblyEnd(mark));

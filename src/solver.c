@@ -871,6 +871,9 @@ PetscErrorCode SPSolverSolve(SPSolver s, Vec u, SNESConvergedReason *reason)
   PetscCall(RecordSolveGap(s, *reason));
   s->lastLoad      = load;
   s->lastConverged = *reason > 0 ? PETSC_TRUE : PETSC_FALSE;
+  /* a failed solve's Jacobian (and a factorization of it that failed: MUMPS then refuses every
+     solve with it) is not reused by the next solve */
+  if (*reason < 0) s->jacValid = PETSC_FALSE;
   PetscCall(SNESGetIterationNumber(s->snes, &its));
   PetscCall(SNESGetLinearSolveIterations(s->snes, &lits));
   PetscCall(SNESGetNumberFunctionEvals(s->snes, &nf)); /* counted from 0 in every SNESSolve */

@@ -144,3 +144,28 @@ unknown tangent|input/patch_4_5.opts|-contact_tangent nosuch
 two-pass without pair|input/block2d.opts|-contact_two_pass
 CASES
 }
+
+# A body drifting over its master surface: F2's set-up without friction (-contact_friction_mu 0)
+# leaves the upper disc without tangential support, so every step stalls and cuts back while the
+# disc slides sideways. The master facets it then meets were outside the exchange's bounding box
+# when the contact part of the Jacobian took its rows, though their pattern was already in J:
+# before, the sixth cut-back ended in "spcontact: error: New nonzero at (500,0) caused a malloc"
+# and a second PETSc line (exit 1). Now every owned master facet's rows are marked
+# (SPContactMarkRows). On 2 ranks the step's LU factorization (MUMPS, the 2D default) of the
+# singular Jacobian fails, and the Jacobian reused by the cut-back's solve then ended the run in
+# MUMPS's "INFOG(1)=-3" error wall: a failed solve's Jacobian is no longer reused. The run ends
+# as a failed solve, exit 2, the usual line saying so, no error line and no final-named output;
+# on 1 and 2 ranks.
+test_pairs_drift_pattern() {
+  local rc=0 np out
+  for np in 1 2; do
+    out=$CASE_DIR/np$np.txt
+    spc "$out" "$np" -options_file input/cattaneo2d.opts -contact_friction_mu 0 -output_dir "$CASE_DIR" -output_name "np$np"
+    assert_eq "exit_np$np" $? 2 || rc=1
+    assert_eq "error_lines_np$np" "$(grep -c '^spcontact: error\|caused a malloc\|PETSC ERROR' "$out")" 0 || rc=1
+    assert_eq "failed_line_np$np" "$(grep -c '^spcontact: the solve did not converge; results above are for the last converged load step only$' "$out")" 1 || rc=1
+    assert_eq "converged_np$np" "$(sval "$out" converged)" no || rc=1
+    [ ! -e "$CASE_DIR/np$np.h5" ] || { echo "np$np.h5 written as if complete FAILED"; rc=1; }
+  done
+  return $rc
+}
