@@ -786,7 +786,7 @@ PetscErrorCode SPSolverSetFromOptions(SPSolver s)
   PetscCheck(s->atolRel >= 0.0 && s->atolRel < 1.0, PetscObjectComm((PetscObject)s->dm), PETSC_ERR_USER_INPUT, "-solver_atol_rel %.6g: must be in [0, 1)", (double)s->atolRel);
   PetscCheck(s->acceptRtol >= 0.0 && s->acceptRtol < 1.0, PetscObjectComm((PetscObject)s->dm), PETSC_ERR_USER_INPUT, "-solver_linear_accept %.6g: must be in [0, 1) (0: a linear solve short of its tolerance fails the Newton solve)", (double)s->acceptRtol);
   PetscCheck(s->directDofs >= 0, PetscObjectComm((PetscObject)s->dm), PETSC_ERR_USER_INPUT, "-solver_direct_dofs %" PetscInt_FMT ": must be >= 0 (0: every 2D run starts iterative)", s->directDofs);
-  PetscCheck(s->directIts >= 0, PetscObjectComm((PetscObject)s->dm), PETSC_ERR_USER_INPUT, "-solver_direct_switch %" PetscInt_FMT ": must be >= 0 (0: never switch to a direct solver)", s->directIts);
+  PetscCheck(s->directIts >= 0, PetscObjectComm((PetscObject)s->dm), PETSC_ERR_USER_INPUT, "-solver_direct_switch %" PetscInt_FMT ": must be >= 0 (0: never a direct solver)", s->directIts);
   PetscCheck(s->pcLag >= 0.0 && s->pcLag < PETSC_INFINITY, PetscObjectComm((PetscObject)s->dm), PETSC_ERR_USER_INPUT, "-solver_pc_lag %.6g: must be >= 0 and finite (0: a new preconditioner with every new Jacobian)", (double)s->pcLag);
   PetscCheck(s->stallIts >= 0, PetscObjectComm((PetscObject)s->dm), PETSC_ERR_USER_INPUT, "-solver_stall_its %" PetscInt_FMT ": must be >= 0 (0: no stagnation test)", s->stallIts);
   PetscCheck(s->jacReuseMax >= 0, PetscObjectComm((PetscObject)s->dm), PETSC_ERR_USER_INPUT, "-solver_jacobian_reuse %" PetscInt_FMT ": must be >= 0 (0: assemble every Newton iteration)", s->jacReuseMax);
