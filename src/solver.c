@@ -849,6 +849,25 @@ PetscErrorCode SPSolverSetHistory(SPSolver s, FILE *fp, PetscInt step)
 }
 
 /* One Newton solve at the current load factor and contact state */
+/* A failed solve's Jacobian is not reused, and a factorization is rebuilt from scratch: after a
+   failed factorization PETSc 3.18's MUMPS interface skips every later numeric factorization of the
+   same factor (its INFOG(1) stays negative) and then refuses the solve (INFOG(1)=-3). GAMG is not
+   reset: its set-up with a reused interpolation cannot start again from PCReset. */
+static PetscErrorCode ForgetFailedSolve(SPSolver s)
+{
+  KSP       ksp;
+  PC        pc;
+  PetscBool factor;
+
+  PetscFunctionBeginUser;
+  s->jacValid = PETSC_FALSE;
+  PetscCall(SNESGetKSP(s->snes, &ksp));
+  PetscCall(KSPGetPC(ksp, &pc));
+  PetscCall(PetscObjectTypeCompareAny((PetscObject)pc, &factor, PCLU, PCCHOLESKY, ""));
+  if (factor) PetscCall(PCReset(pc));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode SPSolverSolve(SPSolver s, Vec u, SNESConvergedReason *reason)
 {
   PetscReal load;
@@ -871,9 +890,7 @@ PetscErrorCode SPSolverSolve(SPSolver s, Vec u, SNESConvergedReason *reason)
   PetscCall(RecordSolveGap(s, *reason));
   s->lastLoad      = load;
   s->lastConverged = *reason > 0 ? PETSC_TRUE : PETSC_FALSE;
-  /* a failed solve's Jacobian (and a factorization of it that failed: MUMPS then refuses every
-     solve with it) is not reused by the next solve */
-  if (*reason < 0) s->jacValid = PETSC_FALSE;
+  if (*reason < 0) PetscCall(ForgetFailedSolve(s));
   PetscCall(SNESGetIterationNumber(s->snes, &its));
   PetscCall(SNESGetLinearSolveIterations(s->snes, &lits));
   PetscCall(SNESGetNumberFunctionEvals(s->snes, &nf)); /* counted from 0 in every SNESSolve */
