@@ -91,6 +91,7 @@ PETSC_EXTERN PetscErrorCode SPContactHasPairs(SPContact, PetscBool *);
 PETSC_EXTERN PetscErrorCode SPContactShiftsInNewton(SPContact, PetscBool *);
 PETSC_EXTERN PetscErrorCode SPContactUpdatesShifts(SPContact, PetscBool *);
 PETSC_EXTERN PetscErrorCode SPContactGetActiveVersion(SPContact, PetscInt *);
+PETSC_EXTERN PetscBool      SPContactTangentFixed(SPContact);
 PETSC_EXTERN PetscErrorCode SPContactGetActiveChanges(SPContact, PetscInt *, PetscInt *);
 PETSC_EXTERN PetscErrorCode SPContactGetShiftContraction(SPContact, PetscReal *);
 PETSC_EXTERN PetscErrorCode SPContactGetUpdateForce(SPContact, PetscReal *);
@@ -139,6 +140,7 @@ PETSC_EXTERN PetscBool      SPSolverReorthogonalises(SPSolver);
 PETSC_EXTERN PetscBool      SPSolverStalled(SPSolver);
 PETSC_EXTERN const char    *SPSolverReasonName(SPSolver, SNESConvergedReason);
 PETSC_EXTERN PetscErrorCode SPSolverGetBulkOperator(SPSolver, const char **);
+PETSC_EXTERN PetscErrorCode SPSolverGetLinearSolver(SPSolver, const char **, const char **);
 PETSC_EXTERN PetscErrorCode SPSolverDestroy(SPSolver *);
 
 /* loading.c */

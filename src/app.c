@@ -166,7 +166,7 @@ PetscErrorCode SPAppSummary(SPApp a)
   PetscReal      umax, err;
   PetscBool      hasErr, on;
   PetscLogDouble t1;
-  const char    *prefix, *bulk;
+  const char    *prefix, *bulk, *ksp, *pc;
 
   PetscFunctionBeginUser;
   PetscCall(SPSolverGetCounts(a->solver, &newton, &linear, &functions));
@@ -190,6 +190,8 @@ PetscErrorCode SPAppSummary(SPApp a)
   PetscCall(PetscViewerASCIIPrintf(v, "krylov_reorthogonalised %s\n", SPSolverReorthogonalises(a->solver) ? "yes" : "no"));
   PetscCall(SPSolverGetDirectStep(a->solver, &directStep));
   PetscCall(PetscViewerASCIIPrintf(v, "direct_solver_from_step %" PetscInt_FMT "\n", directStep));
+  PetscCall(SPSolverGetLinearSolver(a->solver, &ksp, &pc));
+  PetscCall(PetscViewerASCIIPrintf(v, "linear_solver %s/%s\n", ksp ? ksp : "none", pc ? pc : "none"));
   PetscCall(SPSolverGetBulkOperator(a->solver, &bulk));
   PetscCall(PetscViewerASCIIPrintf(v, "bulk_operator %s\n", bulk));
   PetscCall(PetscViewerASCIIPrintf(v, "displacement_max %.10e\n", (double)umax));

@@ -528,6 +528,18 @@ PetscErrorCode SPContactCommitStep(SPContact c, Vec X)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Whether the contact tangent is a function of the active set alone: frictionless contact with
+   rigid planes only (n fixed, no curvature term, k = eps on every active point). A Jacobian of an
+   unchanged active version is then exact, not a chord (no contact: the bulk alone). */
+PetscBool SPContactTangentFixed(SPContact c)
+{
+  if (!c || !c->enabled) return PETSC_TRUE;
+  if (c->friction || c->npair) return PETSC_FALSE;
+  for (PetscInt o = 0; o < c->nob; ++o)
+    if (c->ob[o].type != SP_OBSTACLE_PLANE) return PETSC_FALSE;
+  return PETSC_TRUE;
+}
+
 /* A counter that moves whenever a point's active state changes (with friction: at every
    bookkeeping, the stick/slip tangent changes without it) or the tangent switches its curvature
    terms on or off (-contact_tangent auto): the Jacobian of an unchanged version differs from the
@@ -535,7 +547,7 @@ PetscErrorCode SPContactCommitStep(SPContact c, Vec X)
 PetscErrorCode SPContactGetActiveVersion(SPContact c, PetscInt *version)
 {
   PetscFunctionBeginUser;
-  *version = c && c->enabled ? 2 * c->activeVersion + (SPContactGeometricTangent(c) ? 1 : 0) : 0;
+  *version = c && c->enabled ? 2 * c->activeVersion + (SPContactGeometricTangent(c) && !SPContactTangentFixed(c) ? 1 : 0) : 0;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -199,12 +199,14 @@ static PetscErrorCode FormFunction(SNES snes, Vec X, Vec F, void *ctx)
    pressure in the curvature term), a change of the order of the displacement increment over the
    curvature radius. Keeping the assembled matrix then keeps the preconditioner too (PCSetUp
    skips an unchanged operator), at the price of a chord step on that small change; at most
-   jacReuseMax reuses in a row (-solver_jacobian_reuse). */
+   jacReuseMax reuses in a row (-solver_jacobian_reuse), without limit where that change is zero
+   (rigid planes, no friction: SPContactTangentFixed). */
 static PetscBool ReuseJacobian(SPSolver s)
 {
   PetscInt version;
 
-  if (!s->reuse || !s->jacValid || s->jacReused >= s->jacReuseMax) return PETSC_FALSE;
+  if (!s->reuse || !s->jacValid || !s->jacReuseMax) return PETSC_FALSE;
+  if (s->jacReused >= s->jacReuseMax && !SPContactTangentFixed(s->contact)) return PETSC_FALSE;
   if (SPContactGetActiveVersion(s->contact, &version)) return PETSC_FALSE;
   return version == s->jacVersion ? PETSC_TRUE : PETSC_FALSE;
 }
@@ -766,7 +768,7 @@ PetscErrorCode SPSolverSetFromOptions(SPSolver s)
   PetscCall(PetscOptionsBool("-solver_fast_bulk", "Element-level isotropic elasticity for P1/Q1 cells instead of PetscFE where it applies (false: always PetscFE)", "SPSolverSetFromOptions", fast, &fast, NULL));
   PetscCall(PetscOptionsBool("-solver_check_fast", "Verification: compare the fast and the PetscFE bulk residual/Jacobian (and the matrix pattern with DMCreateMatrix's) once, print the relative differences", "SPSolverSetFromOptions", s->checkFast, &s->checkFast, NULL));
   PetscCall(PetscOptionsReal("-solver_atol_rel", "Absolute residual tolerance relative to the largest initial residual norm of the run (the out-of-balance load); -snes_atol replaces it by an absolute one", "SPSolverSetFromOptions", s->atolRel, &s->atolRel, NULL));
-  PetscCall(PetscOptionsInt("-solver_jacobian_reuse", "Linear material: keep the assembled Jacobian and its preconditioner for at most this many Newton iterations in a row while the active set does not change (0: assemble every iteration)", "SPSolverSetFromOptions", s->jacReuseMax, &s->jacReuseMax, NULL));
+  PetscCall(PetscOptionsInt("-solver_jacobian_reuse", "Linear material: keep the assembled Jacobian and its preconditioner for at most this many Newton iterations in a row while the active set does not change; without limit against rigid planes without friction, where the Jacobian is then exact (0: assemble every iteration)", "SPSolverSetFromOptions", s->jacReuseMax, &s->jacReuseMax, NULL));
   PetscCall(PetscOptionsBool("-solver_inexact", "Inexact Newton: search steps to -solver_inexact_rtol, steps that feed a shift update tighter (README Performance); default true for a linear material without friction (false: every solve to -ksp_rtol)", "SPSolverSetFromOptions", s->inexact, &s->inexact, NULL));
   PetscCall(PetscOptionsBool("-solver_target_floor", "Without the inexact Newton (the default with friction or a nonlinear material): no linear solve reduces the residual further than to 1% of the Newton residual target, at most -solver_inexact_rtol, at least -ksp_rtol (false: every solve to -ksp_rtol)", "SPSolverSetFromOptions", s->targetFloor, &s->targetFloor, NULL));
   PetscCall(PetscOptionsReal("-solver_inexact_rtol", "Inexact Newton: the loosest linear relative tolerance of a step that may feed a shift update", "SPSolverSetFromOptions", s->rtolMax, &s->rtolMax, NULL));
@@ -994,6 +996,21 @@ PetscErrorCode SPSolverGetBulkOperator(SPSolver s, const char **name)
 {
   PetscFunctionBeginUser;
   *name = s->fast ? "fast" : "petscfe";
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The Krylov method and preconditioner of the last solve (summary key linear_solver: "cg/gamg",
+   "preonly/lu" with the 2D factorization) */
+PetscErrorCode SPSolverGetLinearSolver(SPSolver s, const char **ksp, const char **pc)
+{
+  KSP k;
+  PC  p;
+
+  PetscFunctionBeginUser;
+  PetscCall(SNESGetKSP(s->snes, &k));
+  PetscCall(KSPGetPC(k, &p));
+  PetscCall(KSPGetType(k, ksp));
+  PetscCall(PCGetType(p, pc));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

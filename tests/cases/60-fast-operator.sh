@@ -97,3 +97,23 @@ test_gamg_shared_graph_friction_copies() {
   ! grep -q 'GAMG graph: the system matrix itself' "$CASE_DIR/fric.txt" || { echo "friction run used the shared graph"; return 1; }
   grep -q 'MatCoarsenApply_MISK_private' "$CASE_DIR/fric.txt" || { echo "no GAMG coarsening in the friction run"; return 1; }
 }
+
+# Jacobian reuse against rigid planes (SPContactTangentFixed): without friction, a plane's contact
+# tangent depends on the active set alone, so the assembled Jacobian (and its factorization) is
+# kept for as long as the active set does not change, past -solver_jacobian_reuse's cap of 5 for
+# curved obstacles. B2's active set changes once (1 -> 28 points, at the first Newton iteration):
+# 2 assemblies, so jacobian_reuses = newton - 2, with the Newton and linear iterations of
+# assembling at every iteration (-solver_jacobian_reuse 0) and its figures to 1e-10; 1 and 2 ranks.
+test_jacobian_reuse_plane() {
+  local rc=0 np every kept
+  for np in 1 2; do
+    every=$CASE_DIR/every_np$np.txt kept=$CASE_DIR/kept_np$np.txt
+    spc "$every" "$np" -options_file input/hertz2d.opts -solver_jacobian_reuse 0 -output_dir "$CASE_DIR" -output_name "every_np$np" -output_fields false || return 1
+    spc "$kept" "$np" -options_file input/hertz2d.opts -output_dir "$CASE_DIR" -output_name "kept_np$np" -output_fields false || return 1
+    assert_eq "reuses_every_np$np" "$(sval "$every" jacobian_reuses)" 0 || rc=1
+    assert_eq "reuses_np$np" "$(sval "$kept" jacobian_reuses)" $(( $(sval "$kept" newton_iterations) - 2 )) || rc=1
+    same_summary "$every" "$kept" 0 newton_iterations linear_iterations contact_active_points || rc=1
+    same_summary "$every" "$kept" 1e-10 contact_force_y contact_peak_pressure displacement_max || rc=1
+  done
+  return $rc
+}

@@ -8,7 +8,8 @@
 # (-solver_direct_dofs 0); it never factors (direct_solver_from_step 0)
 b2_iterative() {
   spc "$1" 1 -options_file input/hertz2d.opts -solver_direct_dofs 0 -output_dir "$CASE_DIR" -output_name "$(basename "$1" .txt)" -output_fields false || return 1
-  assert_eq from_step_iterative "$(sval "$1" direct_solver_from_step)" 0
+  assert_eq from_step_iterative "$(sval "$1" direct_solver_from_step)" 0 || return 1
+  assert_eq linear_solver_iterative "$(sval "$1" linear_solver)" cg/gamg
 }
 
 # The start: B2 on 1, 2 and 3 ranks factors from load step 1 (summary direct_solver_from_step 1,
@@ -25,6 +26,7 @@ test_direct_start_b2() {
     echo "ranks $np: newton $(sval "$out" newton_iterations) linear $(sval "$out" linear_iterations) (iterative: $(sval "$ref" newton_iterations) / $(sval "$ref" linear_iterations))"
     assert_eq "converged_np$np" "$(sval "$out" converged)" yes || rc=1
     assert_eq "from_step_np$np" "$(sval "$out" direct_solver_from_step)" 1 || rc=1
+    assert_eq "linear_solver_np$np" "$(sval "$out" linear_solver)" preonly/lu || rc=1
     assert_eq "one_solve_per_newton_np$np" "$(sval "$out" linear_iterations)" "$(sval "$out" newton_iterations)" || rc=1
     assert_le "penetration_np$np" "$(sval "$out" contact_max_penetration)" "$(sval "$out" contact_gap_tol)" || rc=1
     same_summary "$ref" "$out" 0 newton_iterations contact_active_points || rc=1
@@ -37,6 +39,7 @@ test_direct_start_b2() {
   same_summary "$ref" "$CASE_DIR/never.txt" 0 linear_iterations || rc=1
   spc "$CASE_DIR/b1_3d.txt" 1 -options_file input/block3d.opts -output_dir "$CASE_DIR" -output_name b1 -output_fields false || return 1
   assert_eq from_step_3d "$(sval "$CASE_DIR/b1_3d.txt" direct_solver_from_step)" 0 || rc=1
+  assert_eq linear_solver_3d "$(sval "$CASE_DIR/b1_3d.txt" linear_solver)" cg/gamg || rc=1
   return $rc
 }
 
@@ -95,6 +98,7 @@ test_direct_switch_scope() {
   local rc=0
   spc "$CASE_DIR/b1_3d.txt" 1 -options_file input/block3d.opts -solver_direct_switch 1 -output_dir "$CASE_DIR" -output_name b1 -output_fields false || return 1
   assert_eq from_step_3d "$(sval "$CASE_DIR/b1_3d.txt" direct_solver_from_step)" 0 || rc=1
+  assert_eq linear_solver_3d "$(sval "$CASE_DIR/b1_3d.txt" linear_solver)" cg/gamg || rc=1
   b2_iterative "$CASE_DIR/ref.txt" || return 1
   spc "$CASE_DIR/user.txt" 1 -options_file input/hertz2d.opts -solver_direct_switch 1 -pc_type gamg -output_dir "$CASE_DIR" -output_name user -output_fields false || return 1
   assert_eq from_step_user_solver "$(sval "$CASE_DIR/user.txt" direct_solver_from_step)" 0 || rc=1
