@@ -426,6 +426,7 @@ struct _n_SPSolver {
   PetscReal           innerTarget, solveGap[2]; /* this iterate's inner-solve target (0: the residual target alone); gap error after the load step's last two converged solves (0: none) */
   PetscInt            directIts;     /* -solver_direct_switch: a 2D solve with more linear iterations switches to a factorization (solver-direct.c; 0: never) */
   PetscInt            directDofs;    /* -solver_direct_dofs: a 2D run with at most this many dofs factors from the start */
+  PetscBool           directChol;    /* -solver_direct_cholesky: the factorization of a symmetric Jacobian is Cholesky (LDL^T), else LU */
   PetscBool           directStart;   /* this run factors from the start */
   PetscBool           directAllowed; /* this run may still switch */
   PetscInt            directStep;    /* the load step of the switch (0: none) */

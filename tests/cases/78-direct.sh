@@ -1,5 +1,5 @@
 # The 2D sparse direct solver (src/solver-direct.c): a 2D run with at most -solver_direct_dofs
-# dofs (default 1e6) factors its Jacobian (LU, MUMPS) from the start; a larger one switches once a
+# dofs (default 1e6) factors its Jacobian (MUMPS: Cholesky where it is symmetric, else LU) from the start; a larger one switches once a
 # linear solve of the default iterative solver takes more than -solver_direct_switch iterations
 # (default 100), or fails. The switch is tested here on runs made larger than the threshold by
 # -solver_direct_dofs 0.
@@ -15,8 +15,9 @@ b2_iterative() {
 # The start: B2 on 1, 2 and 3 ranks factors from load step 1 (summary direct_solver_from_step 1,
 # one linear iteration per Newton iteration), with the Newton iterations of the iterative run
 # (-solver_direct_dofs 0) and its force, peak pressure and active points (1e-8); its penetration
-# below the gap tolerance. Not when the threshold is below B2's 9690 dofs, not with
-# -solver_direct_switch 0 (never a direct solver), not in 3D (B1 3D).
+# below the gap tolerance. Frictionless small strain (a symmetric Jacobian) factors with Cholesky
+# (summary linear_solver preonly/cholesky), friction (F1b) with LU. Not when the threshold is below
+# B2's 9690 dofs, not with -solver_direct_switch 0 (never a direct solver), not in 3D (B1 3D).
 test_direct_start_b2() {
   local rc=0 np out ref=$CASE_DIR/iter.txt
   b2_iterative "$ref" || return 1
@@ -26,7 +27,7 @@ test_direct_start_b2() {
     echo "ranks $np: newton $(sval "$out" newton_iterations) linear $(sval "$out" linear_iterations) (iterative: $(sval "$ref" newton_iterations) / $(sval "$ref" linear_iterations))"
     assert_eq "converged_np$np" "$(sval "$out" converged)" yes || rc=1
     assert_eq "from_step_np$np" "$(sval "$out" direct_solver_from_step)" 1 || rc=1
-    assert_eq "linear_solver_np$np" "$(sval "$out" linear_solver)" preonly/lu || rc=1
+    assert_eq "linear_solver_np$np" "$(sval "$out" linear_solver)" preonly/cholesky || rc=1
     assert_eq "one_solve_per_newton_np$np" "$(sval "$out" linear_iterations)" "$(sval "$out" newton_iterations)" || rc=1
     assert_le "penetration_np$np" "$(sval "$out" contact_max_penetration)" "$(sval "$out" contact_gap_tol)" || rc=1
     same_summary "$ref" "$out" 0 newton_iterations contact_active_points || rc=1
@@ -40,6 +41,8 @@ test_direct_start_b2() {
   spc "$CASE_DIR/b1_3d.txt" 1 -options_file input/block3d.opts -output_dir "$CASE_DIR" -output_name b1 -output_fields false || return 1
   assert_eq from_step_3d "$(sval "$CASE_DIR/b1_3d.txt" direct_solver_from_step)" 0 || rc=1
   assert_eq linear_solver_3d "$(sval "$CASE_DIR/b1_3d.txt" linear_solver)" cg/gamg || rc=1
+  spc "$CASE_DIR/f1b.txt" 1 -options_file input/friction_slide2d.opts -output_dir "$CASE_DIR" -output_name f1b -output_fields false || return 1
+  assert_eq linear_solver_friction "$(sval "$CASE_DIR/f1b.txt" linear_solver)" preonly/lu || rc=1
   return $rc
 }
 
@@ -61,7 +64,7 @@ test_direct_switch_b6_alpha1000() {
     assert_eq "converged_np$np" "$(sval "$out" converged)" yes || rc=1
     assert_eq "cutbacks_np$np" "$(sval "$out" cutbacks)" 0 || rc=1
     assert_eq "from_step_np$np" "$(sval "$out" direct_solver_from_step)" 1 || rc=1
-    assert_eq "message_np$np" "$(grep -c '^linear solver: cg took [0-9]* iterations in one solve (-solver_direct_switch 100) (2D): from here on a sparse direct solver (LU)' "$out")" 1 || rc=1
+    assert_eq "message_np$np" "$(grep -c '^linear solver: cg took [0-9]* iterations in one solve (-solver_direct_switch 100) (2D): from here on a sparse direct solver (Cholesky)' "$out")" 1 || rc=1
     assert_le "newton_np$np" "$(sval "$out" newton_iterations)" $(( $(sval "$ref" newton_iterations) + 2 )) || rc=1
     assert_le "linear_np$np" "$(sval "$out" linear_iterations)" $(( $(sval "$ref" linear_iterations) / 10 )) || rc=1
     assert_close "force_np$np" "$(sval "$out" contact_force_y)" 0.005 1e-8 || rc=1
@@ -84,7 +87,7 @@ test_direct_switch_recovery() {
     assert_eq "converged_np$np" "$(sval "$out" converged)" yes || rc=1
     assert_eq "cutbacks_np$np" "$(sval "$out" cutbacks)" 0 || rc=1
     assert_eq "from_step_np$np" "$(sval "$out" direct_solver_from_step)" 1 || rc=1
-    assert_eq "message_np$np" "$(grep -c '^linear solver: cg failed (DIVERGED_ITS); the load step again (2D): from here on a sparse direct solver (LU)' "$out")" 1 || rc=1
+    assert_eq "message_np$np" "$(grep -c '^linear solver: cg failed (DIVERGED_ITS); the load step again (2D): from here on a sparse direct solver (Cholesky)' "$out")" 1 || rc=1
     same_summary "$ref" "$out" 1e-8 contact_force_y contact_peak_pressure || rc=1
   done
   return $rc
@@ -99,6 +102,8 @@ test_direct_switch_scope() {
   spc "$CASE_DIR/b1_3d.txt" 1 -options_file input/block3d.opts -solver_direct_switch 1 -output_dir "$CASE_DIR" -output_name b1 -output_fields false || return 1
   assert_eq from_step_3d "$(sval "$CASE_DIR/b1_3d.txt" direct_solver_from_step)" 0 || rc=1
   assert_eq linear_solver_3d "$(sval "$CASE_DIR/b1_3d.txt" linear_solver)" cg/gamg || rc=1
+  spc "$CASE_DIR/f1b.txt" 1 -options_file input/friction_slide2d.opts -output_dir "$CASE_DIR" -output_name f1b -output_fields false || return 1
+  assert_eq linear_solver_friction "$(sval "$CASE_DIR/f1b.txt" linear_solver)" preonly/lu || rc=1
   b2_iterative "$CASE_DIR/ref.txt" || return 1
   spc "$CASE_DIR/user.txt" 1 -options_file input/hertz2d.opts -solver_direct_switch 1 -pc_type gamg -output_dir "$CASE_DIR" -output_name user -output_fields false || return 1
   assert_eq from_step_user_solver "$(sval "$CASE_DIR/user.txt" direct_solver_from_step)" 0 || rc=1

@@ -90,7 +90,7 @@ rs_direct() {
   rs_case "$1" -options_file input/hertz2d.opts -solver_direct_dofs 0 -solver_direct_switch 1 || return 1
   local rc=0
   assert_eq switched_in_first_half "$(grep -c '^linear solver: cg took' "$CASE_DIR/half.txt")" 1 || rc=1
-  assert_eq resumed_line "$(grep -c '^linear solver: the sparse direct solver (LU) of the interrupted run, from its load step 1;' "$CASE_DIR/rest.txt")" 1 || rc=1
+  assert_eq resumed_line "$(grep -c '^linear solver: the sparse direct solver (Cholesky) of the interrupted run, from its load step 1;' "$CASE_DIR/rest.txt")" 1 || rc=1
   assert_eq "direct_solver_from_step (full, restarted)" "$(sval "$CASE_DIR/full.txt" direct_solver_from_step) $(sval "$CASE_DIR/rest.txt" direct_solver_from_step)" "1 1" || rc=1
   return $rc
 }
