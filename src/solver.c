@@ -852,7 +852,6 @@ PetscErrorCode SPSolverSetHistory(SPSolver s, FILE *fp, PetscInt step)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* One Newton solve at the current load factor and contact state */
 /* A failed solve's Jacobian is not reused, and a factorization is rebuilt from scratch: after a
    failed factorization PETSc 3.18's MUMPS interface skips every later numeric factorization of the
    same factor (its INFOG(1) stays negative) and then refuses the solve (INFOG(1)=-3). GAMG is not
@@ -872,6 +871,7 @@ static PetscErrorCode ForgetFailedSolve(SPSolver s)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* One Newton solve at the current load factor and contact state */
 PetscErrorCode SPSolverSolve(SPSolver s, Vec u, SNESConvergedReason *reason)
 {
   PetscReal load;
@@ -1002,7 +1002,7 @@ PetscErrorCode SPSolverGetBulkOperator(SPSolver s, const char **name)
 }
 
 /* The Krylov method and preconditioner of the last solve (summary key linear_solver: "cg/gamg",
-   "preonly/lu" with the 2D factorization) */
+   "gmres/gamg", "preonly/cholesky" or "preonly/lu" with the 2D factorization) */
 PetscErrorCode SPSolverGetLinearSolver(SPSolver s, const char **ksp, const char **pc)
 {
   KSP k;
