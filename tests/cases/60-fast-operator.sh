@@ -103,10 +103,10 @@ test_gamg_shared_graph_friction_copies() {
 # kept for as long as the active set does not change, past -solver_jacobian_reuse's cap of 5 for
 # curved obstacles. B2's active set changes once (1 -> 28 points, at the first Newton iteration):
 # 2 assemblies, so jacobian_reuses = newton - 2, with the Newton and linear iterations of
-# assembling at every iteration (-solver_jacobian_reuse 0) and its figures to 1e-10; 1 and 2 ranks.
+# assembling at every iteration (-solver_jacobian_reuse 0) and its figures to 1e-10; 1, 2 and 3 ranks.
 test_jacobian_reuse_plane() {
   local rc=0 np every kept
-  for np in 1 2; do
+  for np in 1 2 3; do
     every=$CASE_DIR/every_np$np.txt kept=$CASE_DIR/kept_np$np.txt
     spc "$every" "$np" -options_file input/hertz2d.opts -solver_jacobian_reuse 0 -output_dir "$CASE_DIR" -output_name "every_np$np" -output_fields false || return 1
     spc "$kept" "$np" -options_file input/hertz2d.opts -output_dir "$CASE_DIR" -output_name "kept_np$np" -output_fields false || return 1
