@@ -389,6 +389,7 @@ struct _n_SPSolver {
   Mat                 J;
   Vec                 r;
   FILE               *history; /* CSV rows, rank 0 only; may be NULL */
+  SPProgress         *progress; /* the app's progress lines (NULL: none) */
   PetscInt            step;
   PetscInt            newtonTotal, linearTotal, lastLinear, funcTotal; /* funcTotal: SNES function evaluations */
   PetscBool           reuse;  /* linear material: K assembled once, r(u) = r0(load) + K u */
@@ -511,10 +512,10 @@ struct _n_SPApp {
   PetscInt  loadSteps, maxCutbacks, stepsDone, cutbacks;
   PetscInt  growAfter, streak; /* the increment doubles after growAfter converged steps in a row (streak) */
   PetscReal minIncrement, maxWallTime; /* cut-back floor (load factor); seconds (0: none) */
-  PetscBool converged, quiet; /* quiet: no progress line per load step */
+  PetscBool converged;
   PetscReal loadReached;
   PetscReal loadBefore;    /* the converged load factor before loadReached (-1: none; the stuck points' predictor) */
-  PetscLogDouble t0;
+  SPProgress progress; /* the progress lines; progress.t0: the run's start */
   SPSignals signals;
   int       interrupted;   /* the signal that stopped the run (0: none) */
   char      restartFile[PETSC_MAX_PATH_LEN]; /* -restart: resume from this h5 ("" : from the start) */

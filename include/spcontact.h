@@ -30,6 +30,15 @@ typedef struct {
 } SPLog;
 PETSC_EXTERN PetscErrorCode SPLogRegister(SPLog *);
 
+/* The progress lines on stdout (log.c): one per converged load step and, within a long step, one
+   per Newton iteration at most every -progress_interval seconds; none with -quiet */
+typedef struct {
+  PetscBool      quiet;
+  PetscReal      interval; /* seconds between the lines within a step (0: every Newton iteration) */
+  PetscLogDouble t0, last; /* the run's start; the last line printed */
+} SPProgress;
+PETSC_EXTERN PetscErrorCode SPProgressIteration(SPProgress *, MPI_Comm, PetscInt, PetscInt, PetscReal, PetscReal, PetscInt, PetscReal);
+
 /* mesh.c, partition-metis.c */
 PETSC_EXTERN PetscErrorCode SPMeshCreate(MPI_Comm, DM *);
 PETSC_EXTERN PetscErrorCode SPMeshGetSerialNumbers(DM, const PetscInt **);
@@ -107,6 +116,7 @@ PETSC_EXTERN PetscErrorCode SPContactGetFields(SPContact, Vec, Vec, Vec, Vec, Ve
 PETSC_EXTERN PetscErrorCode SPContactGetFrictionFields(SPContact, Vec, Vec, Vec, Vec);
 PETSC_EXTERN PetscErrorCode SPContactWritePoints(SPContact, Vec, const char[]);
 PETSC_EXTERN PetscErrorCode SPContactView(SPContact, PetscViewer);
+PETSC_EXTERN PetscErrorCode SPContactDescribe(SPContact, char *, size_t);
 PETSC_EXTERN PetscErrorCode SPContactDestroy(SPContact *);
 
 /* matrix.c, matrix-graph.c */
@@ -126,6 +136,7 @@ PETSC_EXTERN PetscErrorCode SPSolverCreate(DM, SPProblem, SPContact, SPLog *, SP
 PETSC_EXTERN PetscErrorCode SPSolverSetFromOptions(SPSolver);
 PETSC_EXTERN PetscErrorCode SPSolverSolve(SPSolver, Vec, SNESConvergedReason *);
 PETSC_EXTERN PetscErrorCode SPSolverSetHistory(SPSolver, FILE *, PetscInt);
+PETSC_EXTERN void           SPSolverSetProgress(SPSolver, SPProgress *);
 PETSC_EXTERN PetscErrorCode SPSolverGetCounts(SPSolver, PetscInt *, PetscInt *, PetscInt *);
 PETSC_EXTERN PetscErrorCode SPSolverGetJacobianReuses(SPSolver, PetscInt *);
 PETSC_EXTERN PetscErrorCode SPSolverGetPCKeeps(SPSolver, PetscInt *);
@@ -141,6 +152,7 @@ PETSC_EXTERN PetscBool      SPSolverStalled(SPSolver);
 PETSC_EXTERN const char    *SPSolverReasonName(SPSolver, SNESConvergedReason);
 PETSC_EXTERN PetscErrorCode SPSolverGetBulkOperator(SPSolver, const char **);
 PETSC_EXTERN PetscErrorCode SPSolverGetLinearSolver(SPSolver, const char **, const char **);
+PETSC_EXTERN PetscErrorCode SPSolverDescribeLinear(SPSolver, char *, size_t);
 PETSC_EXTERN PetscErrorCode SPSolverDestroy(SPSolver *);
 
 /* loading.c */

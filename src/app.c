@@ -13,11 +13,15 @@ PetscErrorCode SPAppCreate(MPI_Comm comm, SPApp *app)
   a->maxCutbacks = 20;
   a->minIncrement = 1e-4;
   a->growAfter    = 4;
-  PetscCall(PetscTime(&a->t0));
+  a->progress.interval = 10.0;
+  PetscCall(PetscTime(&a->progress.t0));
+  a->progress.last = a->progress.t0;
   PetscCall(SPLogRegister(&a->log));
   *app = a;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
+
+static PetscErrorCode RunLine(SPApp);
 
 static PetscErrorCode LoadingSetFromOptions(SPApp a)
 {
@@ -30,9 +34,11 @@ static PetscErrorCode LoadingSetFromOptions(SPApp a)
   PetscCall(PetscOptionsInt("-load_grow_after", "After a cut-back, double the increment (up to 1/load_steps) after this many converged steps in a row (0: never)", "SPAppSetUp", a->growAfter, &a->growAfter, NULL));
   PetscCall(PetscOptionsReal("-load_min_increment", "Floor of the cut-back: the run stops rather than halve the load-factor increment below this", "SPAppSetUp", a->minIncrement, &a->minIncrement, NULL));
   PetscCall(PetscOptionsReal("-max_wall_time", "Seconds: no new load step starts after this wall time; the run stops keeping its converged steps (0: no limit)", "SPAppSetUp", a->maxWallTime, &a->maxWallTime, NULL));
-  PetscCall(PetscOptionsBool("-quiet", "No progress line per load step on stdout (the summary is still printed)", "SPAppSetUp", a->quiet, &a->quiet, NULL));
+  PetscCall(PetscOptionsBool("-quiet", "No progress lines on stdout: neither the run line nor the lines per load step and per -progress_interval (the summary is still printed)", "SPAppSetUp", a->progress.quiet, &a->progress.quiet, NULL));
+  PetscCall(PetscOptionsReal("-progress_interval", "Seconds: within a load step, a progress line per Newton iteration at most this often (0: every Newton iteration)", "SPAppSetUp", a->progress.interval, &a->progress.interval, NULL));
   PetscOptionsEnd();
   PetscCheck(a->minIncrement > 0.0 && a->minIncrement <= 1.0, a->comm, PETSC_ERR_USER_INPUT, "-load_min_increment %.6g: must be in (0, 1] (a load-factor increment)", (double)a->minIncrement);
+  PetscCheck(a->progress.interval >= 0.0 && !PetscIsInfOrNanReal(a->progress.interval), a->comm, PETSC_ERR_USER_INPUT, "-progress_interval %.6g: must be a number of seconds >= 0 (0: a line every Newton iteration; -quiet: none)", (double)a->progress.interval);
   PetscCheck(a->maxWallTime >= 0.0, a->comm, PETSC_ERR_USER_INPUT, "-max_wall_time %.6g: must be >= 0 seconds (0: no limit)", (double)a->maxWallTime);
   PetscCheck(a->loadSteps >= 1, a->comm, PETSC_ERR_USER_INPUT, "-load_steps %" PetscInt_FMT ": need at least one load step", a->loadSteps);
   PetscCheck(a->growAfter >= 0, a->comm, PETSC_ERR_USER_INPUT, "-load_grow_after %" PetscInt_FMT ": must be >= 0 (0: the increment never grows back)", a->growAfter);
@@ -72,6 +78,7 @@ PetscErrorCode SPAppSetUp(SPApp a)
   PetscCall(CheckCombination(a));
   PetscCall(SPSolverCreate(a->dm, a->problem, a->contact, &a->log, &a->solver));
   PetscCall(SPSolverSetFromOptions(a->solver));
+  SPSolverSetProgress(a->solver, &a->progress);
   PetscCall(SPOptionsCheckValues(a->comm)); /* every option of the set-up read: none lost its value */
   PetscCall(DMCreateGlobalVector(a->dm, &a->u));
   PetscCall(PetscObjectSetName((PetscObject)a->u, "displacement"));
@@ -79,6 +86,7 @@ PetscErrorCode SPAppSetUp(SPApp a)
   PetscCall(PetscOptionsHasHelp(NULL, &help));
   if (!help) PetscCall(SPRestartLoad(a)); /* before the output files (re)open */
   if (!help) PetscCall(SPOutputOpen(a->output)); /* -help lists the options and writes no file */
+  if (!help) PetscCall(RunLine(a));
   PetscCall(PetscLogStagePop());
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -115,17 +123,14 @@ PetscErrorCode SPAppRun(SPApp a, PetscBool *converged, int *interrupted)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode MeshSummary(SPApp a, PetscViewer v)
+/* Global cells and vertices (N[0], N[1]), each counted once at its owner. Collective. */
+static PetscErrorCode MeshCounts(SPApp a, PetscInt N[2])
 {
-  PetscInt cStart, cEnd, vStart, vEnd, n[2], N[2], dofs, dim, degree;
-  PetscSF  sf;
-  PetscInt nleaves;
+  PetscInt        cStart, cEnd, vStart, vEnd, n[2], nleaves;
+  PetscSF         sf;
   const PetscInt *leaves;
-  PetscMPIInt size;
 
   PetscFunctionBeginUser;
-  PetscCallMPI(MPI_Comm_size(a->comm, &size));
-  PetscCall(DMGetDimension(a->dm, &dim));
   PetscCall(DMPlexGetHeightStratum(a->dm, 0, &cStart, &cEnd));
   PetscCall(DMPlexGetDepthStratum(a->dm, 0, &vStart, &vEnd));
   PetscCall(DMGetPointSF(a->dm, &sf));
@@ -138,6 +143,37 @@ static PetscErrorCode MeshSummary(SPApp a, PetscViewer v)
     if (p >= cStart && p < cEnd) n[0]--;
   }
   PetscCallMPI(MPI_Allreduce(n, N, 2, MPIU_INT, MPI_SUM, a->comm));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* One line on stdout before the first load step (not with -quiet): what this run is */
+static PetscErrorCode RunLine(SPApp a)
+{
+  PetscInt    N[2], dofs, dim;
+  PetscMPIInt size;
+  char        contact[256], linear[256];
+
+  PetscFunctionBeginUser;
+  if (a->progress.quiet) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(MeshCounts(a, N));
+  PetscCallMPI(MPI_Comm_size(a->comm, &size));
+  PetscCall(DMGetDimension(a->dm, &dim));
+  PetscCall(VecGetSize(a->u, &dofs));
+  PetscCall(SPContactDescribe(a->contact, contact, sizeof(contact)));
+  PetscCall(SPSolverDescribeLinear(a->solver, linear, sizeof(linear)));
+  PetscCall(PetscPrintf(a->comm, "run: %" PetscInt_FMT "D, %" PetscInt_FMT " dofs, %" PetscInt_FMT " cells, %d rank%s; %" PetscInt_FMT " load step%s; %s; linear solver %s\n", dim, dofs, N[0], size, size == 1 ? "" : "s", a->loadSteps, a->loadSteps == 1 ? "" : "s", contact, linear));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode MeshSummary(SPApp a, PetscViewer v)
+{
+  PetscInt    N[2], dofs, dim, degree;
+  PetscMPIInt size;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_size(a->comm, &size));
+  PetscCall(DMGetDimension(a->dm, &dim));
+  PetscCall(MeshCounts(a, N));
   PetscCall(VecGetSize(a->u, &dofs));
   PetscCall(SPProblemGetDegree(a->problem, &degree));
   PetscCall(PetscViewerASCIIPrintf(v, "ranks %d\ndim %" PetscInt_FMT "\ncells %" PetscInt_FMT "\nvertices %" PetscInt_FMT "\ndofs %" PetscInt_FMT "\nfe_degree %" PetscInt_FMT "\n", size, dim, N[0], N[1], dofs, degree));
@@ -204,7 +240,7 @@ PetscErrorCode SPAppSummary(SPApp a)
     PetscCall(PetscViewerASCIIPrintf(v, "memory_peak_rank_mib %.1f\n", (double)memMax));
   }
   PetscCall(PetscViewerASCIIPrintf(v, "output_prefix %s\n", prefix));
-  PetscCall(PetscViewerASCIIPrintf(v, "wall_time %.3f\n", (double)(t1 - a->t0)));
+  PetscCall(PetscViewerASCIIPrintf(v, "wall_time %.3f\n", (double)(t1 - a->progress.t0)));
   PetscCall(PetscViewerASCIIPrintf(v, "=== end summary ===\n"));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

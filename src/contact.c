@@ -449,6 +449,24 @@ static PetscErrorCode ViewSetUp(SPContact c, PetscViewer v)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The contact for the run line (app.c): method, penalty, friction, obstacles and pairs */
+PetscErrorCode SPContactDescribe(SPContact c, char *buf, size_t len)
+{
+  char eps[64], fric[64] = "";
+
+  PetscFunctionBeginUser;
+  if (!c->enabled) {
+    PetscCall(PetscStrncpy(buf, "no contact", len));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  if (c->penalty > 0.0) PetscCall(PetscSNPrintf(eps, sizeof(eps), "penalty %.6g", (double)c->penalty));
+  else PetscCall(PetscSNPrintf(eps, sizeof(eps), "alpha %.6g", (double)c->alpha));
+  if (c->friction && c->mu > 0.0) PetscCall(PetscSNPrintf(fric, sizeof(fric), ", friction mu %.6g", (double)c->mu));
+  else if (c->friction) PetscCall(PetscStrncpy(fric, ", friction (mu per obstacle or pair)", sizeof(fric)));
+  PetscCall(PetscSNPrintf(buf, len, "contact %s (%s%s), %" PetscInt_FMT " obstacle%s, %" PetscInt_FMT " pair%s%s", c->method->name, eps, fric, c->nob, c->nob == 1 ? "" : "s", c->nuser, c->nuser == 1 ? "" : "s", c->twoPass ? " (two-pass)" : ""));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* The contact keys of the summary block (figures of the final state). Collective. */
 PetscErrorCode SPContactView(SPContact c, PetscViewer v)
 {

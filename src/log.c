@@ -1,5 +1,5 @@
-/* Named log stages and events, so -log_view shows where the time goes; the progress line per load
-   step. */
+/* Named log stages and events, so -log_view shows where the time goes; the progress lines (per load
+   step, and per -progress_interval within a step). */
 #include <spcontact-impl.h>
 
 PetscErrorCode SPLogRegister(SPLog *log)
@@ -36,11 +36,30 @@ PetscErrorCode SPLogProgress(SPApp app, PetscInt step, PetscInt total, PetscReal
   PetscLogDouble t;
 
   PetscFunctionBeginUser;
-  if (app->quiet) PetscFunctionReturn(PETSC_SUCCESS);
+  if (app->progress.quiet) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(SPSolverGetCounts(app->solver, &its, &lits, NULL));
   PetscCall(SPContactIsActive(app->contact, &on));
   if (on) PetscCall(SPContactGetIterationStats(app->contact, &st));
   PetscCall(PetscTime(&t));
-  PetscCall(PetscPrintf(app->comm, "step %" PetscInt_FMT "/%" PetscInt_FMT " load %.6f newton %" PetscInt_FMT " linear %" PetscInt_FMT " active %" PetscInt_FMT " max_penetration %.3e wall %.2fs\n", step, total, (double)load, its - its0, lits - lits0, st.activePoints, (double)st.maxPenetration, (double)(t - app->t0)));
+  PetscCall(PetscPrintf(app->comm, "step %" PetscInt_FMT "/%" PetscInt_FMT " load %.6f newton %" PetscInt_FMT " linear %" PetscInt_FMT " active %" PetscInt_FMT " max_penetration %.3e wall %.2fs\n", step, total, (double)load, its - its0, lits - lits0, st.activePoints, (double)st.maxPenetration, (double)(t - app->progress.t0)));
+  app->progress.last = t;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Within a load step, at the end of Newton iteration it >= 1: one line (indented, so not a step
+   line) once -progress_interval seconds have passed since the last progress line, or every
+   iteration with 0; the Newton residual against its target, the active points and the max
+   penetration of the iterate, the wall time since the start. Rank 0's clock decides (only rank 0
+   prints; nothing here is collective). */
+PetscErrorCode SPProgressIteration(SPProgress *p, MPI_Comm comm, PetscInt step, PetscInt it, PetscReal fnorm, PetscReal target, PetscInt active, PetscReal maxPen)
+{
+  PetscLogDouble t;
+
+  PetscFunctionBeginUser;
+  if (p->quiet || it == 0) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(PetscTime(&t));
+  if (t - p->last < p->interval) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(PetscPrintf(comm, "  step %" PetscInt_FMT " newton %" PetscInt_FMT " residual %.3e target %.3e active %" PetscInt_FMT " max_penetration %.3e wall %.2fs\n", step, it, (double)fnorm, (double)target, active, (double)maxPen, (double)(t - p->t0)));
+  p->last = t;
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -62,6 +62,19 @@ static const char *FactorName(SPSolver s)
   return UseCholesky(s) ? "Cholesky" : "LU";
 }
 
+/* The linear solver for the run line (app.c): ksp/pc, and when a 2D run factors */
+PetscErrorCode SPSolverDescribeLinear(SPSolver s, char *buf, size_t len)
+{
+  const char *ksp, *pc;
+
+  PetscFunctionBeginUser;
+  PetscCall(SPSolverGetLinearSolver(s, &ksp, &pc));
+  if (s->directStart) PetscCall(PetscSNPrintf(buf, len, "%s/%s (MUMPS %s from the first solve: 2D with at most -solver_direct_dofs %" PetscInt_FMT " dofs)", ksp, pc, FactorName(s), s->directDofs));
+  else if (s->directAllowed) PetscCall(PetscSNPrintf(buf, len, "%s/%s (a sparse direct solver once a solve takes more than -solver_direct_switch %" PetscInt_FMT " iterations)", ksp, pc, s->directIts));
+  else PetscCall(PetscSNPrintf(buf, len, "%s/%s", ksp ? ksp : "none", pc ? pc : "none"));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* After SNESSetFromOptions: whether this run factors from the start (2D, at most directDofs dofs,
    MUMPS), or may switch later (2D, a factorization available); neither with the user's solver
    or -solver_direct_switch 0 */

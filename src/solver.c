@@ -311,7 +311,7 @@ static PetscErrorCode ShiftHook(SNESLineSearch ls, Vec X, Vec Y, Vec W, PetscBoo
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode LogIteration(SPSolver s, PetscInt it, PetscReal fnorm, PetscInt *solveIts)
+static PetscErrorCode LogIteration(SPSolver s, PetscInt it, PetscReal fnorm, PetscReal target, PetscInt *solveIts)
 {
   SPContactStats st = {0};
   PetscInt       lits;
@@ -328,6 +328,7 @@ static PetscErrorCode LogIteration(SPSolver s, PetscInt it, PetscReal fnorm, Pet
   lits += s->refineStep; /* the step's refinement (RefineStep) */
   s->refineStep = 0;
   if (on) PetscCall(SPContactMonitor(s->contact, it, fnorm));
+  if (s->progress) PetscCall(SPProgressIteration(s->progress, PetscObjectComm((PetscObject)s->dm), s->step, it, fnorm, target, st.activePoints, st.maxPenetration));
   if (s->history)
     PetscCall(PetscFPrintf(PetscObjectComm((PetscObject)s->dm), s->history, "%" PetscInt_FMT ",%" PetscInt_FMT ",%" PetscInt_FMT ",%.10e,%" PetscInt_FMT ",%.10e,%.10e,%" PetscInt_FMT ",%" PetscInt_FMT ",%" PetscInt_FMT ",%.10e\n", s->step, st.augmentations, it, (double)fnorm, st.activePoints, (double)st.maxPenetration, (double)st.maxShiftChange, lits, st.stickPoints, st.slipPoints, (double)st.maxStickCreep));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -617,7 +618,7 @@ static PetscErrorCode Converged(SNES snes, PetscInt it, PetscReal xnorm, PetscRe
      below the residual tolerance (B4 at 1e6 dofs: 2e-13 against 7e-13), and a solve that stops at
      once leaves the gap, and the next augmentation's, where they were (alm: 30 updates, cut-back) */
   if (it == 0 && s->resolve && *reason > 0) *reason = SNES_CONVERGED_ITERATING;
-  PetscCall(LogIteration(s, it, fnorm, &lits));
+  PetscCall(LogIteration(s, it, fnorm, target, &lits));
   PetscCall(SPSolverDirectCheck(s, lits));
   PetscCall(SPContactIsActive(s->contact, &on));
   if (on && (*reason == SNES_CONVERGED_ITERATING || *reason == SNES_CONVERGED_SNORM_RELATIVE)) PetscCall(RoundOffFloor(s, it, fnorm, reason));
@@ -842,6 +843,11 @@ PetscErrorCode SPSolverSetFromOptions(SPSolver s)
     PetscCall(SNESLineSearchSetPostCheck(ls, ShiftHook, s));
   }
   PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+void SPSolverSetProgress(SPSolver s, SPProgress *progress)
+{
+  s->progress = progress;
 }
 
 PetscErrorCode SPSolverSetHistory(SPSolver s, FILE *fp, PetscInt step)

@@ -73,6 +73,7 @@ gap tol zero|input/hertz2d.opts|-contact_gap_tol 0
 cut-back budget negative|input/hertz2d.opts|-load_max_cutbacks -1
 minimum increment above 1|input/hertz2d.opts|-load_min_increment 2
 wall time negative|input/hertz2d.opts|-max_wall_time -5
+progress interval negative|input/hertz2d.opts|-progress_interval -1
 stall iterations negative|input/hertz2d.opts|-solver_stall_its -1
 direct switch negative|input/hertz2d.opts|-solver_direct_switch -1
 direct dofs negative|input/hertz2d.opts|-solver_direct_dofs -1

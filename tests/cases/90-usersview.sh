@@ -32,6 +32,41 @@ test_progress_line() {
   return $rc
 }
 
+# The run line (one, before the first step line, after the set-up's checks) names the dimension,
+# dofs and cells (those of the summary), ranks, load steps, contact and linear solver: B2 on 1 and 2
+# ranks (MUMPS Cholesky from the first solve), B4 at 12^3 on 2 ranks (CG + GAMG), F1b (friction:
+# LU), the elastic patch (no contact); none with -quiet. Within a step, -progress_interval 0 gives
+# one indented line per Newton iteration (B4: as many as its Newton iterations, numbered 1..n, the
+# last residual below its target), the default (10 s) none on runs this short.
+run_line() { grep '^run: ' "$1"; }
+test_progress_run_line() {
+  local rc=0 np out line
+  for np in 1 2; do
+    out=$CASE_DIR/b2_$np.txt
+    spc "$out" $np -options_file input/hertz2d.opts -output_dir "$CASE_DIR" -output_name "b2_$np" || return 1
+    line=$(run_line "$out"); echo "$line"
+    assert_eq "run_lines_b2_np$np" "$(grep -c '^run: ' "$out")" 1 || rc=1
+    assert_eq "run_line_first_b2_np$np" "$(grep -n '^run: \|^step ' "$out" | head -1 | cut -d: -f2)" run || rc=1
+    assert_eq "run_line_b2_np$np" "$line" "run: 2D, $(sval "$out" dofs) dofs, $(sval "$out" cells) cells, $np rank$([ $np = 1 ] || echo s); 1 load step; contact shifted (alpha 10), 1 obstacle, 0 pairs; linear solver preonly/cholesky (MUMPS Cholesky from the first solve: 2D with at most -solver_direct_dofs 1000000 dofs)" || rc=1
+    assert_eq "no_heartbeat_b2_np$np" "$(grep -c '^  step ' "$out")" 0 || rc=1
+  done
+  out=$CASE_DIR/b4.txt
+  spc "$out" 2 -options_file input/indent3d.opts -dm_plex_box_faces 12,12,12 -progress_interval 0 -output_dir "$CASE_DIR" -output_name b4 || return 1
+  run_line "$out"
+  assert_eq run_line_b4 "$(run_line "$out")" "run: 3D, $(sval "$out" dofs) dofs, 1728 cells, 2 ranks; 1 load step; contact shifted (alpha 10), 1 obstacle, 0 pairs; linear solver cg/gamg" || rc=1
+  grep '^  step ' "$out"
+  assert_eq heartbeat_lines_b4 "$(grep -c '^  step 1 newton ' "$out")" "$(sval "$out" newton_iterations)" || rc=1
+  assert_eq heartbeat_numbered_b4 "$(grep '^  step ' "$out" | awk '{ if ($4 != NR) bad = 1 } END { print bad ? "no" : "yes" }')" yes || rc=1
+  assert_eq heartbeat_last_below_target_b4 "$(grep '^  step ' "$out" | tail -1 | awk '{ print ($6 + 0 <= $8 + 0) ? "yes" : "no" }')" yes || rc=1
+  spc "$CASE_DIR/f1b.txt" 1 -options_file input/friction_slide2d.opts -load_steps 2 -output_dir "$CASE_DIR" -output_name f1b || return 1
+  assert_eq run_line_f1b "$(run_line "$CASE_DIR/f1b.txt" | sed 's/.*; contact/contact/')" "contact shifted (alpha 10, friction mu 0.3), 1 obstacle, 0 pairs; linear solver preonly/lu (MUMPS LU from the first solve: 2D with at most -solver_direct_dofs 1000000 dofs)" || rc=1
+  spc "$CASE_DIR/el.txt" 1 -options_file input/elastic2d.opts -output_dir "$CASE_DIR" -output_name el || return 1
+  assert_eq run_line_no_contact "$(run_line "$CASE_DIR/el.txt" | cut -d';' -f3)" " no contact" || rc=1
+  spc "$CASE_DIR/quiet.txt" 2 -options_file input/indent3d.opts -dm_plex_box_faces 12,12,12 -progress_interval 0 -quiet -output_dir "$CASE_DIR" -output_name quiet || return 1
+  assert_eq quiet_no_progress "$(grep -c '^run: \|^  step \|^step ' "$CASE_DIR/quiet.txt")" 0 || rc=1
+  return $rc
+}
+
 # Every option name the code reads (a "-name" literal in a PetscOptions* call in src/) is listed
 # by a bare `spcontact -help` (no options file: the indexed families appear with index 0), and is
 # in the README's option reference; -help exits 0 and writes no file.
