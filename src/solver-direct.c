@@ -69,9 +69,11 @@ PetscErrorCode SPSolverDescribeLinear(SPSolver s, char *buf, size_t len)
 
   PetscFunctionBeginUser;
   PetscCall(SPSolverGetLinearSolver(s, &ksp, &pc));
+  ksp = ksp ? ksp : "none";
+  pc  = pc ? pc : "none";
   if (s->directStart) PetscCall(PetscSNPrintf(buf, len, "%s/%s (MUMPS %s from the first solve: 2D with at most -solver_direct_dofs %" PetscInt_FMT " dofs)", ksp, pc, FactorName(s), s->directDofs));
   else if (s->directAllowed) PetscCall(PetscSNPrintf(buf, len, "%s/%s (a sparse direct solver once a solve takes more than -solver_direct_switch %" PetscInt_FMT " iterations)", ksp, pc, s->directIts));
-  else PetscCall(PetscSNPrintf(buf, len, "%s/%s", ksp ? ksp : "none", pc ? pc : "none"));
+  else PetscCall(PetscSNPrintf(buf, len, "%s/%s", ksp, pc));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
