@@ -37,7 +37,7 @@ typedef struct {
   PetscReal      interval; /* seconds between the lines within a step (0: every Newton iteration) */
   PetscLogDouble t0, last; /* the run's start; the last line printed */
 } SPProgress;
-PETSC_EXTERN PetscErrorCode SPProgressIteration(SPProgress *, MPI_Comm, PetscInt, PetscInt, PetscReal, PetscReal, PetscInt, PetscReal);
+PETSC_EXTERN PetscErrorCode SPProgressIteration(SPProgress *, MPI_Comm, PetscInt, PetscInt, PetscInt, PetscReal, PetscReal, PetscInt, PetscReal);
 
 /* mesh.c, partition-metis.c */
 PETSC_EXTERN PetscErrorCode SPMeshCreate(MPI_Comm, DM *);

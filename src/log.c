@@ -48,18 +48,21 @@ PetscErrorCode SPLogProgress(SPApp app, PetscInt step, PetscInt total, PetscReal
 
 /* Within a load step, at the end of Newton iteration it >= 1: one line (indented, so not a step
    line) once -progress_interval seconds have passed since the last progress line, or every
-   iteration with 0; the Newton residual against its target, the active points and the max
+   iteration with 0; the augmentation (aug >= 0: methods that update after a solve, whose Newton
+   count restarts with each), the Newton residual against its target, the active points and the max
    penetration of the iterate, the wall time since the start. Rank 0's clock decides (only rank 0
    prints; nothing here is collective). */
-PetscErrorCode SPProgressIteration(SPProgress *p, MPI_Comm comm, PetscInt step, PetscInt it, PetscReal fnorm, PetscReal target, PetscInt active, PetscReal maxPen)
+PetscErrorCode SPProgressIteration(SPProgress *p, MPI_Comm comm, PetscInt step, PetscInt aug, PetscInt it, PetscReal fnorm, PetscReal target, PetscInt active, PetscReal maxPen)
 {
   PetscLogDouble t;
+  char           augs[48] = "";
 
   PetscFunctionBeginUser;
   if (p->quiet || it == 0) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(PetscTime(&t));
   if (t - p->last < p->interval) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCall(PetscPrintf(comm, "  step %" PetscInt_FMT " newton %" PetscInt_FMT " residual %.3e target %.3e active %" PetscInt_FMT " max_penetration %.3e wall %.2fs\n", step, it, (double)fnorm, (double)target, active, (double)maxPen, (double)(t - p->t0)));
+  if (aug >= 0) PetscCall(PetscSNPrintf(augs, sizeof(augs), " augmentation %" PetscInt_FMT, aug));
+  PetscCall(PetscPrintf(comm, "  step %" PetscInt_FMT "%s newton %" PetscInt_FMT " residual %.3e target %.3e active %" PetscInt_FMT " max_penetration %.3e wall %.2fs\n", step, augs, it, (double)fnorm, (double)target, active, (double)maxPen, (double)(t - p->t0)));
   p->last = t;
   PetscFunctionReturn(PETSC_SUCCESS);
 }

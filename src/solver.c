@@ -328,7 +328,12 @@ static PetscErrorCode LogIteration(SPSolver s, PetscInt it, PetscReal fnorm, Pet
   lits += s->refineStep; /* the step's refinement (RefineStep) */
   s->refineStep = 0;
   if (on) PetscCall(SPContactMonitor(s->contact, it, fnorm));
-  if (s->progress) PetscCall(SPProgressIteration(s->progress, PetscObjectComm((PetscObject)s->dm), s->step, it, fnorm, target, st.activePoints, st.maxPenetration));
+  if (s->progress) {
+    PetscBool updates = PETSC_FALSE, inNewton = PETSC_FALSE;
+    if (on) PetscCall(SPContactUpdatesShifts(s->contact, &updates));
+    if (on) PetscCall(SPContactShiftsInNewton(s->contact, &inNewton));
+    PetscCall(SPProgressIteration(s->progress, PetscObjectComm((PetscObject)s->dm), s->step, updates && !inNewton ? st.augmentations : -1, it, fnorm, target, st.activePoints, st.maxPenetration));
+  }
   if (s->history)
     PetscCall(PetscFPrintf(PetscObjectComm((PetscObject)s->dm), s->history, "%" PetscInt_FMT ",%" PetscInt_FMT ",%" PetscInt_FMT ",%.10e,%" PetscInt_FMT ",%.10e,%.10e,%" PetscInt_FMT ",%" PetscInt_FMT ",%" PetscInt_FMT ",%.10e\n", s->step, st.augmentations, it, (double)fnorm, st.activePoints, (double)st.maxPenetration, (double)st.maxShiftChange, lits, st.stickPoints, st.slipPoints, (double)st.maxStickCreep));
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -37,7 +37,8 @@ test_progress_line() {
 # ranks (MUMPS Cholesky from the first solve), B4 at 12^3 on 2 ranks (CG + GAMG), F1b (friction:
 # LU), the elastic patch (no contact); none with -quiet. Within a step, -progress_interval 0 gives
 # one indented line per Newton iteration (B4: as many as its Newton iterations, numbered 1..n, the
-# last residual below its target), the default (10 s) none on runs this short.
+# last residual below its target; alm's name their augmentation, 0 to contact_augmentations, since
+# its Newton count restarts with each), the default (10 s) none on runs this short.
 run_line() { grep '^run: ' "$1"; }
 test_progress_run_line() {
   local rc=0 np out line
@@ -58,6 +59,11 @@ test_progress_run_line() {
   assert_eq heartbeat_lines_b4 "$(grep -c '^  step 1 newton ' "$out")" "$(sval "$out" newton_iterations)" || rc=1
   assert_eq heartbeat_numbered_b4 "$(grep '^  step ' "$out" | awk '{ if ($4 != NR) bad = 1 } END { print bad ? "no" : "yes" }')" yes || rc=1
   assert_eq heartbeat_last_below_target_b4 "$(grep '^  step ' "$out" | tail -1 | awk '{ print ($6 + 0 <= $8 + 0) ? "yes" : "no" }')" yes || rc=1
+  out=$CASE_DIR/alm.txt
+  spc "$out" 1 -options_file input/indent3d.opts -dm_plex_box_faces 10,10,10 -contact_method alm -progress_interval 0 -output_dir "$CASE_DIR" -output_name alm || return 1
+  assert_eq heartbeat_lines_alm "$(grep -c '^  step 1 augmentation [0-9]* newton ' "$out")" "$(sval "$out" newton_iterations)" || rc=1
+  assert_eq heartbeat_last_augmentation_alm "$(grep '^  step ' "$out" | tail -1 | awk '{ print $4 }')" "$(sval "$out" contact_augmentations)" || rc=1
+  assert_eq heartbeat_pairs_unique_alm "$(grep '^  step ' "$out" | awk '{ print $4, $6 }' | sort -u | wc -l)" "$(sval "$out" newton_iterations)" || rc=1
   spc "$CASE_DIR/f1b.txt" 1 -options_file input/friction_slide2d.opts -load_steps 2 -output_dir "$CASE_DIR" -output_name f1b || return 1
   assert_eq run_line_f1b "$(run_line "$CASE_DIR/f1b.txt" | sed 's/.*; contact/contact/')" "contact shifted (alpha 10, friction mu 0.3), 1 obstacle, 0 pairs; linear solver preonly/lu (MUMPS LU from the first solve: 2D with at most -solver_direct_dofs 1000000 dofs)" || rc=1
   spc "$CASE_DIR/el.txt" 1 -options_file input/elastic2d.opts -output_dir "$CASE_DIR" -output_name el || return 1
