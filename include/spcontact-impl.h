@@ -510,6 +510,7 @@ struct _n_SPApp {
   SPOutput  output;
   Vec       u;
   PetscInt  loadSteps, maxCutbacks, stepsDone, cutbacks;
+  PetscInt  cells, vertices; /* global mesh counts (MeshCounts, once) */
   PetscInt  growAfter, streak; /* the increment doubles after growAfter converged steps in a row (streak) */
   PetscReal minIncrement, maxWallTime; /* cut-back floor (load factor); seconds (0: none) */
   PetscBool converged;

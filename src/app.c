@@ -57,6 +57,32 @@ static PetscErrorCode CheckCombination(SPApp a)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The global cells and vertices (a->cells, a->vertices), each counted once at its owner; once, at
+   the set-up, for the run line and the summary. Collective. */
+static PetscErrorCode MeshCounts(SPApp a)
+{
+  PetscInt        cStart, cEnd, vStart, vEnd, n[2], N[2], nleaves;
+  PetscSF         sf;
+  const PetscInt *leaves;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMPlexGetHeightStratum(a->dm, 0, &cStart, &cEnd));
+  PetscCall(DMPlexGetDepthStratum(a->dm, 0, &vStart, &vEnd));
+  PetscCall(DMGetPointSF(a->dm, &sf));
+  PetscCall(PetscSFGetGraph(sf, NULL, &nleaves, &leaves, NULL));
+  n[0] = cEnd - cStart;
+  n[1] = vEnd - vStart;
+  for (PetscInt l = 0; l < (nleaves > 0 ? nleaves : 0); ++l) {
+    const PetscInt p = leaves ? leaves[l] : l;
+    if (p >= vStart && p < vEnd) n[1]--; /* count each vertex once, at its owner */
+    if (p >= cStart && p < cEnd) n[0]--;
+  }
+  PetscCallMPI(MPI_Allreduce(n, N, 2, MPIU_INT, MPI_SUM, a->comm));
+  a->cells    = N[0];
+  a->vertices = N[1];
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode SPAppSetUp(SPApp a)
 {
   PetscBool help;
@@ -65,6 +91,7 @@ PetscErrorCode SPAppSetUp(SPApp a)
   PetscCall(LoadingSetFromOptions(a));
   PetscCall(PetscLogStagePush(a->log.mesh));
   PetscCall(SPMeshCreate(a->comm, &a->dm));
+  PetscCall(MeshCounts(a));
   PetscCall(PetscLogStagePop());
   PetscCall(PetscLogStagePush(a->log.setup));
   PetscCall(SPProblemCreate(a->dm, &a->problem));
@@ -123,60 +150,35 @@ PetscErrorCode SPAppRun(SPApp a, PetscBool *converged, int *interrupted)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Global cells and vertices (N[0], N[1]), each counted once at its owner. Collective. */
-static PetscErrorCode MeshCounts(SPApp a, PetscInt N[2])
-{
-  PetscInt        cStart, cEnd, vStart, vEnd, n[2], nleaves;
-  PetscSF         sf;
-  const PetscInt *leaves;
-
-  PetscFunctionBeginUser;
-  PetscCall(DMPlexGetHeightStratum(a->dm, 0, &cStart, &cEnd));
-  PetscCall(DMPlexGetDepthStratum(a->dm, 0, &vStart, &vEnd));
-  PetscCall(DMGetPointSF(a->dm, &sf));
-  PetscCall(PetscSFGetGraph(sf, NULL, &nleaves, &leaves, NULL));
-  n[0] = cEnd - cStart;
-  n[1] = vEnd - vStart;
-  for (PetscInt l = 0; l < (nleaves > 0 ? nleaves : 0); ++l) {
-    const PetscInt p = leaves ? leaves[l] : l;
-    if (p >= vStart && p < vEnd) n[1]--; /* count each vertex once, at its owner */
-    if (p >= cStart && p < cEnd) n[0]--;
-  }
-  PetscCallMPI(MPI_Allreduce(n, N, 2, MPIU_INT, MPI_SUM, a->comm));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 /* One line on stdout before the first load step (not with -quiet): what this run is */
 static PetscErrorCode RunLine(SPApp a)
 {
-  PetscInt    N[2], dofs, dim;
+  PetscInt    dofs, dim;
   PetscMPIInt size;
   char        contact[256], linear[256];
 
   PetscFunctionBeginUser;
   if (a->progress.quiet) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCall(MeshCounts(a, N));
   PetscCallMPI(MPI_Comm_size(a->comm, &size));
   PetscCall(DMGetDimension(a->dm, &dim));
   PetscCall(VecGetSize(a->u, &dofs));
   PetscCall(SPContactDescribe(a->contact, contact, sizeof(contact)));
   PetscCall(SPSolverDescribeLinear(a->solver, linear, sizeof(linear)));
-  PetscCall(PetscPrintf(a->comm, "run: %" PetscInt_FMT "D, %" PetscInt_FMT " dofs, %" PetscInt_FMT " cells, %d rank%s; %" PetscInt_FMT " load step%s; %s; linear solver %s\n", dim, dofs, N[0], size, size == 1 ? "" : "s", a->loadSteps, a->loadSteps == 1 ? "" : "s", contact, linear));
+  PetscCall(PetscPrintf(a->comm, "run: %" PetscInt_FMT "D, %" PetscInt_FMT " dofs, %" PetscInt_FMT " cells, %d rank%s; %" PetscInt_FMT " load step%s; %s; linear solver %s\n", dim, dofs, a->cells, size, size == 1 ? "" : "s", a->loadSteps, a->loadSteps == 1 ? "" : "s", contact, linear));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 static PetscErrorCode MeshSummary(SPApp a, PetscViewer v)
 {
-  PetscInt    N[2], dofs, dim, degree;
+  PetscInt    dofs, dim, degree;
   PetscMPIInt size;
 
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_size(a->comm, &size));
   PetscCall(DMGetDimension(a->dm, &dim));
-  PetscCall(MeshCounts(a, N));
   PetscCall(VecGetSize(a->u, &dofs));
   PetscCall(SPProblemGetDegree(a->problem, &degree));
-  PetscCall(PetscViewerASCIIPrintf(v, "ranks %d\ndim %" PetscInt_FMT "\ncells %" PetscInt_FMT "\nvertices %" PetscInt_FMT "\ndofs %" PetscInt_FMT "\nfe_degree %" PetscInt_FMT "\n", size, dim, N[0], N[1], dofs, degree));
+  PetscCall(PetscViewerASCIIPrintf(v, "ranks %d\ndim %" PetscInt_FMT "\ncells %" PetscInt_FMT "\nvertices %" PetscInt_FMT "\ndofs %" PetscInt_FMT "\nfe_degree %" PetscInt_FMT "\n", size, dim, a->cells, a->vertices, dofs, degree));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -33,8 +33,8 @@ test_progress_line() {
 }
 
 # The run line (one, before the first step line, after the set-up's checks) names the dimension,
-# dofs and cells (those of the summary), ranks, load steps, contact and linear solver: B2 on 1 and 2
-# ranks (MUMPS Cholesky from the first solve), B4 at 12^3 on 2 ranks (CG + GAMG), F1b (friction:
+# dofs and cells (those of the summary), ranks, load steps, contact and linear solver: B2 on 1, 2
+# and 3 ranks (MUMPS Cholesky from the first solve), B4 at 12^3 on 2 ranks (CG + GAMG), F1b (friction:
 # LU), the elastic patch (no contact); none with -quiet. Within a step, -progress_interval 0 gives
 # one indented line per Newton iteration (B4: as many as its Newton iterations, numbered 1..n, the
 # last residual below its target; alm's name their augmentation, 0 to contact_augmentations, since
@@ -42,7 +42,7 @@ test_progress_line() {
 run_line() { grep '^run: ' "$1"; }
 test_progress_run_line() {
   local rc=0 np out line
-  for np in 1 2; do
+  for np in 1 2 3; do
     out=$CASE_DIR/b2_$np.txt
     spc "$out" $np -options_file input/hertz2d.opts -output_dir "$CASE_DIR" -output_name "b2_$np" || return 1
     line=$(run_line "$out"); echo "$line"
