@@ -413,6 +413,8 @@ struct _n_SPSolver {
   PetscBool           targetFloor;          /* -solver_target_floor: without the inexact Newton, no solve past 1% of the residual target */
   PetscReal           rtolMax, rtolMin, rtol, rtolCap, lastF; /* its range (rtolMin: -ksp_rtol), value, safeguard cap, previous |F| */
   PetscReal           rtolSearch, searchCap; /* -solver_inexact_rtol_search, and its cap in this solve (search steps) */
+  PetscReal           rtolLater, laterCap;   /* -solver_inexact_rtol_search_later, and its cap in this solve (search steps after the first) */
+  PetscInt            searchSteps;           /* search steps so far in this solve */
   PetscBool           resolve, lastConverged; /* this solve repeats a converged one at the same load (after a shift update) */
   PetscReal           lastLoad, settledFactor;
   PetscBool           measured, measuring; /* -solver_inexact_measured; and this solve's method updates in Newton */

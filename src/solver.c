@@ -446,7 +446,11 @@ static PetscErrorCode TargetFloor(SPSolver s, PetscReal fnorm)
    the following step, and eta = min(-solver_inexact_rtol_search, 0.1/(1 + alpha)) (1e-2: penalty
    B4 24^3 62 -> 55, shifted 106 -> 94 linear iterations at alpha 10, the same Newton iterations;
    alm keeps etaMax = min(-solver_inexact_rtol, 0.1/(1 + alpha)); the second bound is a tenth of
-   the shift's contraction per update: at 1e-3 B2 at alpha 1000 took +3 Newton iterations). With
+   the shift's contraction per update: at 1e-3 B2 at alpha 1000 took +3 Newton iterations). A
+   solve's later search steps, every method, go to min(-solver_inexact_rtol_search_later,
+   10/(1 + alpha)^2), no tighter than its first (0.083 at alpha 10, unchanged from alpha 100 on:
+   B4 at 1e6 dofs penalty 105 -> 97, shifted 183 -> 165 CG iterations; B3 alm 267 -> 237; the same
+   Newton iterations in every case of the robustness table). With
    penalty a solve's first step is a search step too, solved to etaMax; with shifted and alm it
    may feed an update (shifted: the lazy rule below; alm: a one-step solve, B1, whose first step
    loose cost +2 Newton iterations). Every other step (from a settled active set) feeds a shift
@@ -493,6 +497,11 @@ static PetscErrorCode LinearTolerance(SPSolver s, PetscInt it, PetscReal fnorm)
        at rtolCap (penalty's first step at 1e-2: B1 2 -> 3 Newton iterations, B4 at 32^3 on 2 ranks
        4 -> 5), and so do alm's search steps (1e-2: B2 and B4 +1 Newton iteration at alpha 10) */
     s->searchCap = updates && !inNewton ? s->rtolCap : PetscMax(s->rtolMin, PetscMin(s->rtolSearch, 0.1 * rho));
+    /* search steps after the first (which decided most of the active set), every method: to
+       10 rho^2, looser than the first's only below alpha about 100 (0.083 at alpha 10; at 100 and
+       1000 a cap of rho cost up to +4 Newton iterations: doc/performance.md, "Later search steps") */
+    s->laterCap    = PetscMax(s->searchCap, PetscMin(s->rtolLater, 10.0 * rho * rho));
+    s->searchSteps = 0;
     /* penalty: no update to feed, the first step is a search step */
     eta           = s->resolve ? s->rtolMin : (on && !updates ? s->rtolCap : s->settledFactor * s->rtolCap);
     loose         = s->rtolCap;
@@ -506,8 +515,10 @@ static PetscErrorCode LinearTolerance(SPSolver s, PetscInt it, PetscReal fnorm)
     if (r > 0.5 && st.maxShiftChange == 0.0) {
       s->rtolCap   = PetscMax(s->rtolMin, 1e-2 * s->rtolCap);
       s->searchCap = PetscMax(s->rtolMin, 1e-2 * s->searchCap);
+      s->laterCap  = PetscMax(s->rtolMin, 1e-2 * s->laterCap);
     }
-    eta = ew ? PetscMin(s->rtolCap, 0.9 * r * r) : (st.activeChanged ? s->searchCap : s->rtolCap);
+    if (st.activeChanged) s->searchSteps++;
+    eta = ew ? PetscMin(s->rtolCap, 0.9 * r * r) : (st.activeChanged ? (s->searchSteps > 1 ? s->laterCap : s->searchCap) : s->rtolCap);
     loose = eta;
     /* settled active set: with shifted or alm the step feeds the next shift update, whose error it
        becomes. With penalty it is the last step if the active set stays: solved to the tight
@@ -668,6 +679,7 @@ PetscErrorCode SPSolverCreate(DM dm, SPProblem problem, SPContact contact, SPLog
   s->pcLag       = 0.25;
   s->rtolMax     = 1e-3;
   s->rtolSearch  = 1e-2;
+  s->rtolLater   = 0.1;
   s->settledFactor = 1e-3;
   s->measured      = PETSC_TRUE;
   s->inexactInner  = PETSC_TRUE;
@@ -780,6 +792,7 @@ PetscErrorCode SPSolverSetFromOptions(SPSolver s)
   PetscCall(PetscOptionsBool("-solver_target_floor", "Without the inexact Newton (the default with friction or a nonlinear material): no linear solve reduces the residual further than to 1% of the Newton residual target, at most -solver_inexact_rtol, at least -ksp_rtol (false: every solve to -ksp_rtol)", "SPSolverSetFromOptions", s->targetFloor, &s->targetFloor, NULL));
   PetscCall(PetscOptionsReal("-solver_inexact_rtol", "Inexact Newton: the loosest linear relative tolerance of a step that may feed a shift update", "SPSolverSetFromOptions", s->rtolMax, &s->rtolMax, NULL));
   PetscCall(PetscOptionsReal("-solver_inexact_rtol_search", "Inexact Newton, penalty and shifted: the loosest linear relative tolerance of a search step (from an iterate whose active set just changed; not a solve's first step), at most 0.1/(1 + alpha)", "SPSolverSetFromOptions", s->rtolSearch, &s->rtolSearch, NULL));
+  PetscCall(PetscOptionsReal("-solver_inexact_rtol_search_later", "Inexact Newton, penalty and shifted: the loosest linear relative tolerance of a search step after a solve's first one, at most 10/(1 + alpha)^2 and no tighter than the first search step's (so it moves only at alpha below about 100)", "SPSolverSetFromOptions", s->rtolLater, &s->rtolLater, NULL));
   PetscCall(PetscOptionsReal("-solver_inexact_settled", "Inexact Newton: factor on the loosest linear tolerance for a step from an iterate whose active set did not change (the step then feeds a shift update; with penalty, which feeds none, no further than a quarter of the residual target), and for a solve's first step with a method that updates the shifts (shifted, alm; with penalty it is a search step)", "SPSolverSetFromOptions", s->settledFactor, &s->settledFactor, NULL));
   PetscCall(PetscOptionsBool("-solver_inexact_measured", "Inexact Newton, methods that update the shifts in Newton (shifted): once a shift update on a settled active set has measured the contraction rho of the gap error, steps that feed a shift update are solved to rho^2 (at most the loosest tolerance), and Eisenstat-Walker does not tighten a step after a shift update or an active-set change (false: the rule before, -solver_inexact_settled x the loosest)", "SPSolverSetFromOptions", s->measured, &s->measured, NULL));
   PetscCall(PetscOptionsBool("-solver_inexact_refine", "Inexact Newton with the measured contraction (shifted): a step that needs the tight tolerance only because it may feed a shift update before the contraction is measured (a solve's first step, a settled step before the first measurement) is solved to the loosest tolerance and continued to the tight one only if the shifts then move (false: solved tight at once)", "SPSolverSetFromOptions", s->refine, &s->refine, NULL));
@@ -802,6 +815,7 @@ PetscErrorCode SPSolverSetFromOptions(SPSolver s)
   PetscCheck(s->jacReuseMax >= 0, PetscObjectComm((PetscObject)s->dm), PETSC_ERR_USER_INPUT, "-solver_jacobian_reuse %" PetscInt_FMT ": must be >= 0 (0: assemble every Newton iteration)", s->jacReuseMax);
   PetscCheck(s->rtolMax > 0.0 && s->rtolMax < 1.0, PetscObjectComm((PetscObject)s->dm), PETSC_ERR_USER_INPUT, "-solver_inexact_rtol %.6g: must be in (0, 1) (1e-3 is the default; -solver_inexact false for exact solves)", (double)s->rtolMax);
   PetscCheck(s->rtolSearch > 0.0 && s->rtolSearch < 1.0, PetscObjectComm((PetscObject)s->dm), PETSC_ERR_USER_INPUT, "-solver_inexact_rtol_search %.6g: must be in (0, 1) (1e-2 is the default)", (double)s->rtolSearch);
+  PetscCheck(s->rtolLater > 0.0 && s->rtolLater < 1.0, PetscObjectComm((PetscObject)s->dm), PETSC_ERR_USER_INPUT, "-solver_inexact_rtol_search_later %.6g: must be in (0, 1) (0.1 is the default)", (double)s->rtolLater);
   PetscCheck(s->settledFactor > 0.0 && s->settledFactor <= 1.0, PetscObjectComm((PetscObject)s->dm), PETSC_ERR_USER_INPUT, "-solver_inexact_settled %.6g: must be in (0, 1]", (double)s->settledFactor);
   if (testJ) s->jacReuseMax = 0; /* -snes_test_jacobian compares the assembled Jacobian at every iterate */
   PetscCall(PetscOptionsHasName(NULL, NULL, "-snes_atol", &s->userAtol));

@@ -110,7 +110,9 @@ test_pairs_b6_parallel_invariance() { pairs_invariance input/hertz2d_twobody.opt
 
 # GAMG's graph without the matrix's zero entries (-pc_gamg_threshold 0, spcontact's default with
 # pairs or friction) against PETSc's graph that keeps them (-1): B6 (CG) on 1, 2 and 3 ranks, the
-# same Newton iterations, active points, force and peak pressure to 1e-8, at most 3/4 of the CG
+# same active points, force and peak pressure to 1e-8, Newton iterations within one (the loose later
+# search steps, -solver_inexact_rtol_search_later, end where each preconditioner leaves them:
+# measured 11 and 12 either way round), at most 3/4 of the CG
 # iterations (1 rank: 863 -> 400); the default is the option given (-pc_gamg_threshold 0
 # explicitly: the same run to the digit). GAMG throughout (-solver_direct_switch 0): with zero
 # entries kept a solve takes up to 122 CG iterations, and the 2D switch to LU would end the test.
@@ -122,7 +124,8 @@ test_pairs_gamg_graph() {
       spc "$CASE_DIR/${v%%:*}$np.txt" $np -options_file input/hertz2d_twobody.opts ${v#*:} -solver_direct_switch 0 -output_dir "$CASE_DIR" -output_name "${v%%:*}$np" || return 1
     done
     assert_eq "converged_np$np" "$(sval "$CASE_DIR/default$np.txt" converged)" yes || rc=1
-    same_summary "$CASE_DIR/kept$np.txt" "$CASE_DIR/default$np.txt" 1e-8 newton_iterations contact_active_points contact_force_y contact_peak_pressure || rc=1
+    same_summary "$CASE_DIR/kept$np.txt" "$CASE_DIR/default$np.txt" 1e-8 contact_active_points contact_force_y contact_peak_pressure || rc=1
+    assert_close "newton_iterations_np$np" "$(sval "$CASE_DIR/default$np.txt" newton_iterations)" "$(sval "$CASE_DIR/kept$np.txt" newton_iterations)" 0 1 || rc=1
     same_summary "$CASE_DIR/given$np.txt" "$CASE_DIR/default$np.txt" 0 newton_iterations linear_iterations contact_force_y contact_peak_pressure || rc=1
     on=$(sval "$CASE_DIR/default$np.txt" linear_iterations); off=$(sval "$CASE_DIR/kept$np.txt" linear_iterations)
     echo "np $np: CG iterations $off (zero entries kept) -> $on (default)"

@@ -80,6 +80,7 @@ direct dofs negative|input/hertz2d.opts|-solver_direct_dofs -1
 Jacobian reuse negative|input/hertz2d.opts|-solver_jacobian_reuse -1
 inexact tolerance above 1|input/hertz2d.opts|-solver_inexact_rtol 2
 search tolerance zero|input/hertz2d.opts|-solver_inexact_rtol_search 0
+later search tolerance one|input/hertz2d.opts|-solver_inexact_rtol_search_later 1
 kept preconditioner fraction negative|input/hertz2d.opts|-solver_pc_lag -1
 inexact settled factor zero|input/hertz2d.opts|-solver_inexact_settled 0
 linear accept tolerance 1|input/hertz2d.opts|-solver_linear_accept 1
