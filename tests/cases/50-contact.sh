@@ -256,8 +256,8 @@ test_contact_inexact_later_search() {
 # first residual (not over-solved) and below the solve's own test, -snes_rtol 1e-9 x the first
 # residual (README "Tolerances and units"), with the Newton count, active set and force of exact
 # solves. Measured 1.2e-10 to 1.5e-10 since the later search steps are loose
-# (-solver_inexact_rtol_search_later: the last step starts from 3.4e-7 instead of about 1e-9, and
-# CG's preconditioned norm reaches the quarter of the target before the true residual does),
+# (-solver_inexact_rtol_search_later: the last step starts from 3.4e-7 instead of 3.1e-8, and the
+# sphere's curvature leaves a nonlinear remainder of about 1e-12 above the linear solve's 1.7e-13),
 # 1.6e-11 to 2.1e-11 before; solved to the tight rule 3.4e-12 to 4.6e-12.
 test_contact_inexact_penalty_last_step() {
   local rc=0 np opts ratio
