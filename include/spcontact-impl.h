@@ -240,7 +240,7 @@ struct _n_SPContact {
   PetscInt        nob;
   SPObstacle      ob[SP_MAX_OBSTACLES];
   PetscReal       penalty, alpha, gapTol, stepCap;
-  PetscReal       capSaved;     /* the user's -contact_step_cap while a failed step is solved again with a tenth of it */
+  PetscReal       capSaved;     /* the user's -contact_step_cap while a tighter one is in force (SPContactTightenStepCap) */
   PetscInt        capRetries;   /* load steps solved again with the tighter cap */
   PetscReal       gapRtol, lengthScale; /* gapTol = gapRtol x lengthScale unless -contact_gap_tol is given */
   PetscBool       gapTolSet;

@@ -41,7 +41,7 @@ static PetscErrorCode SolveStep(SPApp app, PetscReal load, PetscReal ratio, Pets
   SPContactPredictNext(app->contact, ratio);
   PetscCall(SolveAndUpdate(app, &reason));
   for (PetscInt k = 0; k < 2 && reason < 0; ++k) { /* the recoveries (the direct solver and the GMRES */
-    PetscBool retry = PETSC_FALSE;                  /* one once per run, the step cap once per step): the step again, no cut-back */
+    PetscBool retry = PETSC_FALSE;                  /* one once per run, the step cap up to twice per step): the step again, no cut-back */
     if (reason == SNES_DIVERGED_LINEAR_SOLVE) {
       PetscCall(SPSolverRecoverDirect(app->solver, &retry));
       if (!retry) PetscCall(SPSolverRecoverBreakdown(app->solver, &retry));
@@ -52,8 +52,8 @@ static PetscErrorCode SolveStep(SPApp app, PetscReal load, PetscReal ratio, Pets
     SPContactPredictNext(app->contact, ratio);
     PetscCall(SolveAndUpdate(app, &reason));
   }
-  SPContactRestoreStepCap(app->contact);
   *ok = reason > 0 ? PETSC_TRUE : PETSC_FALSE;
+  if (*ok) SPContactRestoreStepCap(app->contact); /* a failed step's cut-back keeps the tighter cap */
   if (!*ok) {
     PetscCall(PetscPrintf(app->comm, "load step %" PetscInt_FMT " (load factor %g): solve did not converge (%s)\n", step, (double)load, SPSolverReasonName(app->solver, reason)));
     PetscCall(VecCopy(ubackup, app->u));
