@@ -241,7 +241,7 @@ struct _n_SPContact {
   SPObstacle      ob[SP_MAX_OBSTACLES];
   PetscReal       penalty, alpha, gapTol, stepCap;
   PetscReal       capSaved;     /* the user's -contact_step_cap while a tighter one is in force (SPContactTightenStepCap) */
-  PetscInt        capRetries;   /* load steps solved again with the tighter cap */
+  PetscInt        capRetries;   /* solves of a load step repeated with a tighter cap (up to two per step) */
   PetscReal       gapRtol, lengthScale; /* gapTol = gapRtol x lengthScale unless -contact_gap_tol is given */
   PetscBool       gapTolSet;
   PetscReal       mu, alphaT, creepRtol, slipRtol; /* friction (-contact_friction_*) */
