@@ -241,6 +241,7 @@ struct _n_SPContact {
   SPObstacle      ob[SP_MAX_OBSTACLES];
   PetscReal       penalty, alpha, gapTol, stepCap;
   PetscReal       capSaved;     /* the user's -contact_step_cap while a tighter one is in force (SPContactTightenStepCap) */
+  PetscInt        capLevel;     /* 0: the user's cap in force, 1: a tenth, 2: a hundredth */
   PetscInt        capRetries;   /* solves of a load step repeated with a tighter cap (up to two per step) */
   PetscReal       gapRtol, lengthScale; /* gapTol = gapRtol x lengthScale unless -contact_gap_tol is given */
   PetscBool       gapTolSet;
