@@ -190,6 +190,7 @@ typedef struct {
   PetscBool     held;          /* active before this boundary's shift update: its linear branch is held (branchHold) */
   PetscInt      inactiveCount; /* consecutive inactive iterates (shift reset after two) */
   PetscInt      flips;         /* stick/slip changes in this step (status frozen after 3) */
+  PetscInt      flipsN;        /* open/closed changes in this Newton solve (SPContactChatterHeld) */
   PetscReal     dir[2];        /* slip direction at the last bookkeeping (basis T) */
   PetscBool     reversed;      /* the slip direction reversed at the last bookkeeping */
   /* friction anchor, committed at the last converged step (kept through a cut-back) */
@@ -251,6 +252,10 @@ struct _n_SPContact {
   PetscBool       friction;                        /* some obstacle or pair has mu > 0 */
   PetscReal       creepRel;                        /* max stick creep in the step / h, last bookkeeping */
   PetscInt        maxFlips;                        /* stick/slip changes per step before a status is frozen */
+  PetscInt        chatterFlips;                    /* -contact_chatter_flips (0: off; SPContactChatterHeld) */
+  PetscReal       chatterTension;                  /* -contact_chatter_tension, relative to peakIterate */
+  PetscReal       peakIterate;                     /* the largest pressure -eps (g + s) at the last bookkeeping */
+  PetscInt        chatterHolds;                    /* boundaries x points at which the chatter hold kept a point closed */
   PetscBool       safeguard, settled;
   PetscReal       jumpWait;   /* -contact_friction_jump_wait (contact-friction.c) */
   PetscInt        jumpWaits;  /* boundaries at which it held the shifts back */
@@ -323,6 +328,8 @@ PETSC_EXTERN PetscErrorCode SPContactSearch(SPContact, const PetscScalar[], Pets
 PETSC_EXTERN PetscErrorCode SPContactPointElement(SPContact, PetscInt, PetscInt *, PetscInt[], PetscReal *, PetscReal[], PetscReal[]);
 PETSC_EXTERN void           SPContactPointTraction(SPContact, PetscInt, PetscReal *, PetscReal *);
 PETSC_EXTERN PetscBool      SPContactPointActive(SPContact, PetscInt);
+PETSC_EXTERN PetscBool      SPContactChatterHeld(SPContact, PetscInt);
+PETSC_EXTERN PetscBool      SPContactChatterHolds(SPContact);
 PETSC_EXTERN PetscErrorCode SPContactComputeStats(SPContact);
 PETSC_EXTERN PetscErrorCode SPContactComputeAreas(SPContact);
 PETSC_EXTERN PetscErrorCode SPContactSetGapTolerance(SPContact);

@@ -10,17 +10,19 @@ static inline PetscReal GapError(PetscReal g, PetscBool active)
   return active ? PetscAbsReal(g) : PetscMax(0.0, -g);
 }
 
-static PetscErrorCode Reduce(SPContact c, PetscInt nloc[3], PetscReal rloc[3])
+static PetscErrorCode Reduce(SPContact c, PetscInt nloc[4], PetscReal rloc[4])
 {
   MPI_Comm  comm = PetscObjectComm((PetscObject)c->dm);
-  PetscInt  nall[3];
-  PetscReal rall[3];
+  PetscInt  nall[4];
+  PetscReal rall[4];
 
   PetscFunctionBeginUser;
-  PetscCallMPI(MPI_Allreduce(nloc, nall, 3, MPIU_INT, MPI_SUM, comm));
+  PetscCallMPI(MPI_Allreduce(nloc, nall, 4, MPIU_INT, MPI_SUM, comm));
   if (nall[2]) c->activeVersion++; /* the contact tangent's structure changed (SPContactGetActiveVersion) */
   c->activeChanges += nall[2];
-  PetscCallMPI(MPI_Allreduce(rloc, rall, 3, MPIU_REAL, MPI_MAX, comm));
+  c->chatterHolds += nall[3];
+  PetscCallMPI(MPI_Allreduce(rloc, rall, 4, MPIU_REAL, MPI_MAX, comm));
+  c->peakIterate          = rall[3];
   c->stats.activePoints   = nall[0];
   c->stats.activeChanged  = nall[1];
   c->stats.maxPenetration = rall[0];
@@ -33,8 +35,8 @@ static PetscErrorCode Reduce(SPContact c, PetscInt nloc[3], PetscReal rloc[3])
    number of points whose active state changed since the last bookkeeping */
 static PetscErrorCode Bookkeep(SPContact c, PetscReal maxDs, PetscBool compare)
 {
-  PetscInt  n[3] = {0, 0, 0};
-  PetscReal r[3] = {0.0, maxDs, 0.0};
+  PetscInt  n[4] = {0, 0, 0, 0}; /* active, changed since the last bookkeeping, changed, closed by the chatter hold only */
+  PetscReal r[4] = {0.0, maxDs, 0.0, 0.0}; /* penetration, shift change, gap error, pressure */
 
   PetscFunctionBeginUser;
   for (PetscInt i = 0; i < c->n; ++i) {
@@ -44,9 +46,12 @@ static PetscErrorCode Bookkeep(SPContact c, PetscReal maxDs, PetscBool compare)
     n[0] += active;
     if (compare) n[1] += active != st->active;
     n[2] += active != st->active;
+    if (compare && active != st->active) st->flipsN++;
+    if (compare && active && SPContactChatterHeld(c, i) && !(c->holding && st->held) && g + st->sN > 0.0) n[3]++;
     st->active = active;
     r[0]       = PetscMax(r[0], -g);
     r[2]       = PetscMax(r[2], GapError(g, active));
+    r[3]       = PetscMax(r[3], -c->pt[i].eps * (g + st->sN));
   }
   PetscCall(Reduce(c, n, r));
   PetscCall(SPFrictionBookkeep(c, compare));
@@ -78,7 +83,7 @@ PetscErrorCode SPContactBeginSolve(SPContact c, Vec X)
   PetscCall(Bookkeep(c, 0.0, PETSC_FALSE));
   c->setSettled = PETSC_FALSE;
   c->boundary   = 0;
-  for (PetscInt i = 0; i < c->n; ++i) c->nhist[i] = 0;
+  for (PetscInt i = 0; i < c->n; ++i) c->nhist[i] = 0, c->pt[i].st.flipsN = 0;
   PetscCall(ResetInNewton(c, c->accel));
   PetscCall(ResetInNewton(c, c->accelT));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -335,21 +340,21 @@ PetscErrorCode SPContactLimitStep(SPContact c, Vec X, Vec Y, Vec W, PetscBool *c
    alm) and 11 to 13 cut-backs, on tetrahedra shifted did not converge (15 cut-backs); with the
    hundredth 91 / 100 / 107 and 1 cut-back, tetrahedra 91 / 96 / 95; slide2d at alpha 1000 6 -> 0
    cut-backs (332 / 356 / 374 -> 256 / 268 / 280). The cut-back keeps the tighter cap because with the
-   user's cap the cut-back steps stalled again (slide3d's 11 to 13 cut-backs). 0.1 as the default costs B2 and B3 two or three iterations. Not with
-   friction: the path matters there. On F2 at alpha 1000 a retried normal step (50 Newton
-   iterations instead of 98) leads to shear steps in which one contact-edge point enters and leaves
-   the active set at every iteration (a 2-cycle at |F| ~ 1e-5), and the run takes 293 Newton
-   iterations and 7 cut-backs instead of 163 and 2; F5 423 and 9 instead of 205 and 3. Keeping a
-   tenth of the cap through the normal step's cut-backs (no retry) does the same (F2 294, F5 317).
-   F3 at alpha 1000 converges with either (retry: 190 Newton iterations, 2 cut-backs, 12 minutes on
-   2 ranks) and with -contact_step_cap 0.1 for the whole run (doc/friction-benchmarks.md, F3). */
+   user's cap the cut-back steps stalled again (slide3d's 11 to 13 cut-backs). 0.1 as the default
+   costs B2 and B3 two or three iterations. With friction only where the chatter hold can act
+   (-contact_chatter_flips, shifted and alm; SPContactChatterHeld): on F2 at alpha 1000 the
+   retried normal step (50 Newton iterations instead of 98 and 2 cut-backs) led to shear steps in
+   which one contact-edge point opened and closed at every iteration (441 Newton iterations, 7
+   cut-backs, against 163 and 2 without the retry); with the hold 73 and none (alm 191 -> 124,
+   F5 205 -> 92 and 199 -> 135, none cut back). The hold alone, without the retry, did not help
+   (shifted 319, 6 cut-backs). */
 PetscErrorCode SPContactTightenStepCap(SPContact c, PetscBool *retry)
 {
   const PetscInt maxLevel = 2; /* the tightest cap: a hundredth of the user's */
 
   PetscFunctionBeginUser;
   *retry = PETSC_FALSE;
-  if (!c->enabled || c->friction || c->stepCap <= 0.0 || c->capLevel >= maxLevel) PetscFunctionReturn(PETSC_SUCCESS);
+  if (!c->enabled || (c->friction && !SPContactChatterHolds(c)) || c->stepCap <= 0.0 || c->capLevel >= maxLevel) PetscFunctionReturn(PETSC_SUCCESS);
   if (!c->capLevel) c->capSaved = c->stepCap;
   c->capLevel++;
   c->stepCap *= 0.1;

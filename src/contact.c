@@ -22,6 +22,8 @@ PetscErrorCode SPContactCreate(DM dm, SPProblem problem, PetscLogEvent search, S
   c->stickHold = PETSC_TRUE;
   c->slipRtol  = 1e-8;
   c->maxFlips  = 3;
+  c->chatterFlips = 0;
+  c->chatterTension = 1e-2;
   c->jumpWait  = 10.0;
   c->stepCap = 1.0;
   c->safeguard = PETSC_TRUE;
@@ -180,10 +182,12 @@ PetscErrorCode SPContactSetFromOptions(SPContact c)
   PetscCall(PetscOptionsReal("-contact_alpha", "Penalty factor: eps = alpha E / h, h the mean slave facet size at the point", "SPContactSetFromOptions", c->alpha, &c->alpha, NULL));
   PetscCall(PetscOptionsReal("-contact_gap_rtol", "Methods that update the shift: converged only when no point penetrates more than gap_rtol x h_c and every active point has |gap| <= gap_rtol x h_c (h_c: the smallest mean slave facet size at a contact point)", "SPContactSetFromOptions", c->gapRtol, &c->gapRtol, NULL));
   PetscCall(PetscOptionsReal("-contact_gap_tol", "Absolute gap tolerance (a length); overrides -contact_gap_rtol", "SPContactSetFromOptions", c->gapTol, &c->gapTol, &c->gapTolSet));
-  PetscCall(PetscOptionsReal("-contact_step_cap", "Newton step control: scale a step so no point penetrates deeper than step_cap x h in one step (0: off); without friction, a load step that stalls is solved again with a tenth of it, then a hundredth, kept until a load step converges", "SPContactSetFromOptions", c->stepCap, &c->stepCap, NULL));
+  PetscCall(PetscOptionsReal("-contact_step_cap", "Newton step control: scale a step so no point penetrates deeper than step_cap x h in one step (0: off); a load step that stalls is solved again with a tenth of it, then a hundredth, kept until a load step converges (with friction only with -contact_chatter_flips)", "SPContactSetFromOptions", c->stepCap, &c->stepCap, NULL));
   PetscCall(PetscOptionsBool("-contact_safeguard", "Update the shift only of points active in both the previous and the new iterate (method.md 4.1); false only to demonstrate chatter", "SPContactSetFromOptions", c->safeguard, &c->safeguard, NULL));
   PetscCall(PetscOptionsBool("-contact_shift_predict", "Friction, shifted: a load step whose increment is proportional to the last one (every condition's amplitude moves in proportion), after a step that changed no point's status, starts the stuck points from the tangential tractions extrapolated from the last two converged steps", "SPContactSetFromOptions", c->predict, &c->predict, NULL));
   PetscCall(PetscOptionsBool("-contact_branch_hold", "Shifted and alm: the Newton step after a shift update (alm: the first of the solve after an augmentation) linearises every point on its branch of the iterate before the update (closed: p = -eps (g + s) even where the new shift opens it; stuck or slipping as it was), not on the one the update gives at the unchanged displacement; not with -contact_shift_accel anderson", "SPContactSetFromOptions", c->branchHold, &c->branchHold, NULL));
+  PetscCall(PetscOptionsInt("-contact_chatter_flips", "Shifted and alm: a point that changed between open and closed this many times in a Newton solve stays closed while its tension eps (g + s) is below -contact_chatter_tension times the iterate's peak pressure (0: off)", "SPContactSetFromOptions", c->chatterFlips, &c->chatterFlips, NULL));
+  PetscCall(PetscOptionsReal("-contact_chatter_tension", "The tension, relative to the iterate's peak contact pressure, below which a chattering point stays closed (-contact_chatter_flips)", "SPContactSetFromOptions", c->chatterTension, &c->chatterTension, NULL));
   PetscCall(PetscOptionsBool("-contact_shift_settled", "In-Newton shift update only at iterations whose active set did not change (the contraction rate holds only then)", "SPContactSetFromOptions", c->settled, &c->settled, NULL));
   PetscCall(PetscOptionsEList("-contact_tangent", "Second variation of the gap in the tangent (obstacle curvature; pair projection and normal variation): auto (once a Newton iteration left the active set unchanged), full (always: the consistent tangent), frozen (never)", "SPContactSetFromOptions", Tangents, 3, Tangents[tangent], &tangent, NULL));
   PetscCall(PetscOptionsBool("-contact_monitor", "Print one line per Newton iteration: residual, active points, max penetration, max shift change", "SPContactSetFromOptions", c->monitor, &c->monitor, NULL));
@@ -201,6 +205,8 @@ PetscErrorCode SPContactSetFromOptions(SPContact c)
   PetscCheck(!setPenalty || (c->penalty > 0.0 && !PetscIsInfOrNanReal(c->penalty)), comm, PETSC_ERR_USER_INPUT, "-contact_penalty %.6g: the penalty must be a positive number", (double)c->penalty);
   PetscCheck(!c->gapTolSet || (c->gapTol > 0.0 && !PetscIsInfOrNanReal(c->gapTol)), comm, PETSC_ERR_USER_INPUT, "-contact_gap_tol %.6g: must be a positive finite length", (double)c->gapTol);
   PetscCheck(c->gapRtol > 0.0 && c->gapRtol < 1.0, comm, PETSC_ERR_USER_INPUT, "-contact_gap_rtol %.6g: must be in (0, 1) (a fraction of the contact facet size)", (double)c->gapRtol);
+  PetscCheck(c->chatterFlips >= 0, comm, PETSC_ERR_USER_INPUT, "-contact_chatter_flips %" PetscInt_FMT ": must be >= 0 (0 disables the chatter hold)", c->chatterFlips);
+  PetscCheck(c->chatterTension >= 0.0 && c->chatterTension <= 0.1, comm, PETSC_ERR_USER_INPUT, "-contact_chatter_tension %.6g: must be in [0, 0.1] (a fraction of the peak contact pressure; 0.01 is the default)", (double)c->chatterTension);
   PetscCheck(c->stepCap >= 0.0 && !PetscIsInfOrNanReal(c->stepCap), comm, PETSC_ERR_USER_INPUT, "-contact_step_cap %.6g: must be a finite number >= 0 (0 disables the step control)", (double)c->stepCap);
   for (c->nob = 0; c->nob < SP_MAX_OBSTACLES; ++c->nob) {
     char      name[48];
@@ -432,6 +438,7 @@ static PetscErrorCode ViewSetUp(SPContact c, PetscViewer v)
   PetscCall(PetscViewerASCIIPrintf(v, "contact_evaluations %" PetscInt_FMT "\ncontact_limited_steps %" PetscInt_FMT "\ncontact_shift_updates %" PetscInt_FMT "\n", evals, c->stepLimits, c->shiftUpdates));
   /* not contact_step_*: lines that start with contact_step are the per-step reports */
   PetscCall(PetscViewerASCIIPrintf(v, "contact_retries_step_cap %" PetscInt_FMT "\n", c->capRetries));
+  PetscCall(PetscViewerASCIIPrintf(v, "contact_chatter_holds %" PetscInt_FMT "\n", c->chatterHolds));
   if (c->friction) PetscCall(PetscViewerASCIIPrintf(v, "contact_predicted_steps %" PetscInt_FMT "\n", c->predictions));
   PetscCall(PetscViewerASCIIPrintf(v, "contact_exchanges %" PetscInt_FMT "\ncontact_exchange_time %.6f\n", c->exchanges, (double)tmax));
   PetscCall(PetscViewerASCIIPrintf(v, "contact_exchange_facets_per_rank %.1f\n", c->exchanges ? (double)rec / (double)(c->exchanges * size) : 0.0));

@@ -113,6 +113,9 @@ Young's modulus infinite|input/hertz2d.opts|-material_E inf
 region Young's modulus infinite|input/bimaterial2d.opts|-material_1_E inf
 gap tolerance infinite|input/hertz2d.opts|-contact_gap_tol inf
 step cap infinite|input/hertz2d.opts|-contact_step_cap inf
+chatter flips negative|input/hertz2d.opts|-contact_chatter_flips -1
+chatter tension NaN|input/hertz2d.opts|-contact_chatter_tension nan
+chatter tension above 0.1|input/hertz2d.opts|-contact_chatter_tension 0.5
 creep tolerance infinite|input/friction_block2d.opts|-contact_friction_creep_rtol inf
 number option without its value (another option follows)|input/hertz2d.opts|-load_steps -quiet
 word option without its value (last on the line)|input/hertz2d.opts|-contact_method
