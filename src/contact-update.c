@@ -77,13 +77,13 @@ PetscErrorCode SPContactBeginSolve(SPContact c, Vec X)
   PetscFunctionBeginUser;
   c->holding  = c->holdNext;
   c->holdNext = PETSC_FALSE;
+  for (PetscInt i = 0; i < c->n; ++i) c->nhist[i] = 0, c->pt[i].st.flipsN = 0; /* before the bookkeeping: no chatter hold from the last solve */
   PetscCall(SPContactEvaluate(c, X));
   PetscCall(SPFrictionAnchor(c, PETSC_FALSE));
   PetscCall(SPContactPredictApply(c));
   PetscCall(Bookkeep(c, 0.0, PETSC_FALSE));
   c->setSettled = PETSC_FALSE;
   c->boundary   = 0;
-  for (PetscInt i = 0; i < c->n; ++i) c->nhist[i] = 0, c->pt[i].st.flipsN = 0;
   PetscCall(ResetInNewton(c, c->accel));
   PetscCall(ResetInNewton(c, c->accelT));
   PetscFunctionReturn(PETSC_SUCCESS);
