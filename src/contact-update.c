@@ -346,8 +346,9 @@ PetscErrorCode SPContactLimitStep(SPContact c, Vec X, Vec Y, Vec W, PetscBool *c
    retried normal step (50 Newton iterations instead of 98 and 2 cut-backs) led to shear steps in
    which one contact-edge point opened and closed at every iteration (441 Newton iterations, 7
    cut-backs, against 163 and 2 without the retry); with the hold 73 and none (alm 191 -> 124,
-   F5 205 -> 92 and 199 -> 135, none cut back). The hold alone, without the retry, did not help
-   (shifted 319, 6 cut-backs). */
+   F5 205 -> 92 and 199 -> 135, none cut back; shifted's F2 and F5 retried no step, alm's F2 one).
+   A hold with a fixed opening (1e-6 h) instead, without the retry, did not help (shifted 319, 6
+   cut-backs). */
 PetscErrorCode SPContactTightenStepCap(SPContact c, PetscBool *retry)
 {
   const PetscInt maxLevel = 2; /* the tightest cap: a hundredth of the user's */
