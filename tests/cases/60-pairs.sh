@@ -126,7 +126,11 @@ test_pairs_gamg_graph() {
     assert_eq "converged_np$np" "$(sval "$CASE_DIR/default$np.txt" converged)" yes || rc=1
     same_summary "$CASE_DIR/kept$np.txt" "$CASE_DIR/default$np.txt" 1e-8 contact_active_points contact_force_y contact_peak_pressure || rc=1
     assert_close "newton_iterations_np$np" "$(sval "$CASE_DIR/default$np.txt" newton_iterations)" "$(sval "$CASE_DIR/kept$np.txt" newton_iterations)" 0 1 || rc=1
-    same_summary "$CASE_DIR/given$np.txt" "$CASE_DIR/default$np.txt" 0 newton_iterations linear_iterations contact_force_y contact_peak_pressure || rc=1
+    # the explicit 0 is the default; on 3 ranks two runs of the same command differ by round-off
+    # (262 or 263 CG iterations, the peak pressure by 3e-14; also before 2026-11-28's change, 1 run in 4)
+    same_summary "$CASE_DIR/given$np.txt" "$CASE_DIR/default$np.txt" 1e-10 contact_force_y contact_peak_pressure || rc=1
+    assert_eq "newton_iterations_given_np$np" "$(sval "$CASE_DIR/given$np.txt" newton_iterations)" "$(sval "$CASE_DIR/default$np.txt" newton_iterations)" || rc=1
+    assert_close "linear_iterations_given_np$np" "$(sval "$CASE_DIR/given$np.txt" linear_iterations)" "$(sval "$CASE_DIR/default$np.txt" linear_iterations)" 0 1 || rc=1
     on=$(sval "$CASE_DIR/default$np.txt" linear_iterations); off=$(sval "$CASE_DIR/kept$np.txt" linear_iterations)
     echo "np $np: CG iterations $off (zero entries kept) -> $on (default)"
     assert_le "linear_iterations_np${np}_fewer" "$on" $((off * 3 / 4)) || rc=1
