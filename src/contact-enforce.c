@@ -3,24 +3,26 @@
    between methods (when the shift moves) lives in src/methods/ and contact-update.c. */
 #include <spcontact-impl.h>
 
-/* -contact_chatter_flips N (off by default; shifted and alm): point i, closed at the last
+/* -contact_chatter_flips N (3 by default, 0 = off; shifted and alm): point i, closed at the last
    bookkeeping after it changed between open and closed N times in this Newton solve, stays closed
    while the tension this puts on it, eps (g + s), is below -contact_chatter_tension times the
    largest pressure of the last iterate. The converged state has |g| within the gap tolerance at
    every closed point, so the hold leaves no tension there; penalty, which has no such test, never
-   holds. With it, friction runs get the step-cap recovery too (SPContactTightenStepCap).
-   Why: a contact-edge point whose exact pressure is about 0 can cycle. Closed, the Newton step
-   puts it at g + s ~ 0, which the step's nonlinear remainder opens a little; open, the next step
-   takes the contact elsewhere deep. F2 at alpha 1000 (a shear step near load 0.95, the point at
-   x = -0.1012): opened to g + s = +7e-10 (a tension of 2e-3 p0 if held), then 2.2e-5 deep
-   (h = 0.005), |F| 1e-5 and 3e-2 in turn until the step was cut back. With N = 2: F2 at alpha 1000
-   163 Newton iterations and 2 cut-backs -> 73 and none (alm 191 -> 124), F5 205 / 3 -> 92 / 0
-   (alm 199 -> 135), the stick zones centred. Not a default: F1c (friction_slide3d, every point
-   slipping, the rear edge lifting by tiny gaps) takes 324 and 393 Newton iterations at alpha 10
-   and 100 with it instead of 70 and 55 (2 and 4 cut-backs): there points open for real with a
-   small tension; F3 at alpha 1000 cut its normal step back and took 61 Newton iterations and 26
-   minutes (1 rank) for the first of its then 10 steps. A fixed opening (g + s below a fraction of h) instead of the tension: F2 needed
-   3e-7 h or more, and 1e-6 h let F1c at alpha 1000 take 450 Newton iterations instead of 49. */
+   holds. With it, friction runs get the step-cap recovery too (SPContactTightenStepCap). Why: a
+   contact-edge point whose exact pressure is about 0 can cycle. Closed, the Newton step puts it at
+   g + s ~ 0, which the step's nonlinear remainder opens a little; open, the next step takes the
+   contact elsewhere deep. F2 at alpha 1000 (a shear step near load 0.95, the point at x =
+   -0.1012): opened to g + s = +7e-10 (a tension of 2e-3 p0 if held), then 2.2e-5 deep (h = 0.005),
+   |F| 1e-5 and 3e-2 in turn until the step was cut back. Most holds are in the first Newton
+   iterations of a step, where whole rows of points plunge in, bounce out a little and in again.
+   Newton iterations, off -> 3, 1 rank, alpha 1000: F2 163 (2 cut-backs) -> 75 (alm 191 -> 126), B6
+   41 -> 19 (alm 43 -> 20), dissimilar B6 37 -> 16, slide2d 268 -> 96, slide3d 100 (1 cut-back) ->
+   15; every input at alpha 10 unchanged but F3 (72 -> 71), at 100 the same or fewer; two-pass B6
+   at 1000 loses (47 -> 56, alm 51 -> 58). N = 2 held F1c's (friction_slide3d) rear edge, whose
+   points open for real under a small tension: 70 and 55 Newton iterations at alpha 10 and 100 ->
+   324 and 393; with 3 F1c holds no point. A fixed opening (g + s below a fraction of h) instead of
+   the tension: F2 needed 3e-7 h or more, and 1e-6 h let F1c at alpha 1000 take 450 Newton
+   iterations instead of 49. */
 PetscBool SPContactChatterHolds(SPContact c)
 {
   return c->chatterFlips > 0 && c->method->timing != SP_UPDATE_NONE ? PETSC_TRUE : PETSC_FALSE;

@@ -341,8 +341,8 @@ PetscErrorCode SPContactLimitStep(SPContact c, Vec X, Vec Y, Vec W, PetscBool *c
    hundredth 91 / 100 / 107 and 1 cut-back, tetrahedra 91 / 96 / 95; slide2d at alpha 1000 6 -> 0
    cut-backs (332 / 356 / 374 -> 256 / 268 / 280). The cut-back keeps the tighter cap because with the
    user's cap the cut-back steps stalled again (slide3d's 11 to 13 cut-backs). 0.1 as the default
-   costs B2 and B3 two or three iterations. With friction only where the chatter hold can act
-   (-contact_chatter_flips, shifted and alm; SPContactChatterHeld): on F2 at alpha 1000 the
+   costs B2 and B3 two or three iterations. With friction only where the chatter hold acts (on by default;
+   -contact_chatter_flips, shifted and alm; SPContactChatterHeld): on F2 at alpha 1000 the
    retried normal step (50 Newton iterations instead of 98 and 2 cut-backs) led to shear steps in
    which one contact-edge point opened and closed at every iteration (441 Newton iterations, 7
    cut-backs, against 163 and 2 without the retry); with the hold 73 and none (alm 191 -> 124,

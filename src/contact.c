@@ -22,7 +22,7 @@ PetscErrorCode SPContactCreate(DM dm, SPProblem problem, PetscLogEvent search, S
   c->stickHold = PETSC_TRUE;
   c->slipRtol  = 1e-8;
   c->maxFlips  = 3;
-  c->chatterFlips = 0;
+  c->chatterFlips = 3;
   c->chatterTension = 1e-2;
   c->jumpWait  = 10.0;
   c->stepCap = 1.0;
@@ -182,7 +182,7 @@ PetscErrorCode SPContactSetFromOptions(SPContact c)
   PetscCall(PetscOptionsReal("-contact_alpha", "Penalty factor: eps = alpha E / h, h the mean slave facet size at the point", "SPContactSetFromOptions", c->alpha, &c->alpha, NULL));
   PetscCall(PetscOptionsReal("-contact_gap_rtol", "Methods that update the shift: converged only when no point penetrates more than gap_rtol x h_c and every active point has |gap| <= gap_rtol x h_c (h_c: the smallest mean slave facet size at a contact point)", "SPContactSetFromOptions", c->gapRtol, &c->gapRtol, NULL));
   PetscCall(PetscOptionsReal("-contact_gap_tol", "Absolute gap tolerance (a length); overrides -contact_gap_rtol", "SPContactSetFromOptions", c->gapTol, &c->gapTol, &c->gapTolSet));
-  PetscCall(PetscOptionsReal("-contact_step_cap", "Newton step control: scale a step so no point penetrates deeper than step_cap x h in one step (0: off); a load step that stalls is solved again with a tenth of it, then a hundredth, kept until a load step converges (with friction only with -contact_chatter_flips)", "SPContactSetFromOptions", c->stepCap, &c->stepCap, NULL));
+  PetscCall(PetscOptionsReal("-contact_step_cap", "Newton step control: scale a step so no point penetrates deeper than step_cap x h in one step (0: off); a load step that stalls is solved again with a tenth of it, then a hundredth, kept until a load step converges (with friction only while the chatter hold is on, -contact_chatter_flips)", "SPContactSetFromOptions", c->stepCap, &c->stepCap, NULL));
   PetscCall(PetscOptionsBool("-contact_safeguard", "Update the shift only of points active in both the previous and the new iterate (method.md 4.1); false only to demonstrate chatter", "SPContactSetFromOptions", c->safeguard, &c->safeguard, NULL));
   PetscCall(PetscOptionsBool("-contact_shift_predict", "Friction, shifted: a load step whose increment is proportional to the last one (every condition's amplitude moves in proportion), after a step that changed no point's status, starts the stuck points from the tangential tractions extrapolated from the last two converged steps", "SPContactSetFromOptions", c->predict, &c->predict, NULL));
   PetscCall(PetscOptionsBool("-contact_branch_hold", "Shifted and alm: the Newton step after a shift update (alm: the first of the solve after an augmentation) linearises every point on its branch of the iterate before the update (closed: p = -eps (g + s) even where the new shift opens it; stuck or slipping as it was), not on the one the update gives at the unchanged displacement; not with -contact_shift_accel anderson", "SPContactSetFromOptions", c->branchHold, &c->branchHold, NULL));

@@ -93,7 +93,10 @@ test_pairs3d_slide_hex() {
 # converges with at most one cut-back (before: 11 to 15, and shifted on tetrahedra not at all);
 # shifted and alm give the force of shifted at alpha 100 (exact constraints: the same solution) to
 # 1e-8, penalty within 1e-3 of it (its penetration); slave and master forces balance; shifted the
-# same on 1, 2 and 3 ranks (hexahedra).
+# same on 1, 2 and 3 ranks (hexahedra). Penalty takes the recovery (at most 130 Newton iterations);
+# shifted and alm the chatter hold (on by default, contact-enforce.c), which keeps the swinging
+# points closed: 15 and 17 Newton iterations on hexahedra, no retry (100 and 107 and one cut-back
+# with the recovery), 26 and 30 on tetrahedra with one cut-back (96 and 95); asserted at most 40.
 slide3d_alpha1000() {
   local mesh=$1 rc=0 out ref m
   ref=$CASE_DIR/$mesh-ref.txt
@@ -104,11 +107,13 @@ slide3d_alpha1000() {
     echo "$mesh $m: newton $(sval "$out" newton_iterations) cutbacks $(sval "$out" cutbacks) retries $(sval "$out" contact_retries_step_cap) force_z $(sval "$out" contact_force_z)"
     assert_eq "converged_$m" "$(sval "$out" converged)" yes || rc=1
     assert_le "cutbacks_$m" "$(sval "$out" cutbacks)" 1 || rc=1
-    assert_ge "hundredth_line_$m" "$(grep -c '^Newton did not converge: the load step again with -contact_step_cap 0.01 until a load step converges$' "$out")" 1 || rc=1
-    assert_le "newton_$m" "$(sval "$out" newton_iterations)" 130 || rc=1
     if [ $m = penalty ]; then
+      assert_ge "hundredth_line_$m" "$(grep -c '^Newton did not converge: the load step again with -contact_step_cap 0.01 until a load step converges$' "$out")" 1 || rc=1
+      assert_le "newton_$m" "$(sval "$out" newton_iterations)" 130 || rc=1
       assert_close "force_z_$m" "$(sval "$out" contact_force_z)" "$(sval "$ref" contact_force_z)" 1e-3 || rc=1
     else
+      assert_ge "chatter_holds_$m" "$(sval "$out" contact_chatter_holds)" 1 || rc=1
+      assert_le "newton_$m" "$(sval "$out" newton_iterations)" 40 || rc=1
       assert_close "force_z_$m" "$(sval "$out" contact_force_z)" "$(sval "$ref" contact_force_z)" 1e-8 || rc=1
     fi
     assert_le "force_balance_$m" "$(awk -v a="$(sval "$out" contact_force_z)" -v b="$(sval "$out" contact_force_master_z)" 'BEGIN { d = (a + b) / a; if (d < 0) d = -d; printf "%.3e", d }')" 1e-10 || rc=1

@@ -181,12 +181,13 @@ test_cattaneo2d_alpha1000_breakdown() {
 # Asserted: at most 170 Newton iterations and 2 cut-backs, the wait used, the loads balanced to
 # 1e-8, creep <= 1e-10 h, the stick zone within one element (-0.40 and +0.50 elements, as every
 # method at this alpha), the same figures on 1, 2 and 3 ranks. About 20 s per run (3 to 4 min
-# each with GMRES throughout).
+# each with GMRES throughout). Without the chatter hold (-contact_chatter_flips 0), whose default
+# takes this run to 75 Newton iterations and no cut-back (test_cattaneo2d_alpha1000_chatter_hold).
 test_cattaneo2d_alpha1000_jump_wait() {
   local rc=0 np
   for np in 1 2 3; do
     local name=jw_np$np out=$CASE_DIR/jw_np$np.txt
-    spc "$out" "$np" -options_file input/cattaneo2d.opts -contact_method shifted -contact_alpha 1000 -output_dir "$CASE_DIR" -output_name "$name" || return 1
+    spc "$out" "$np" -options_file input/cattaneo2d.opts -contact_method shifted -contact_alpha 1000 -contact_chatter_flips 0 -output_dir "$CASE_DIR" -output_name "$name" || return 1
     $PYTHON scripts/cattaneo_check.py "$CASE_DIR/${name}_contact.csv" cm > "$CASE_DIR/$name.check" || { cat "$CASE_DIR/$name.check"; return 1; }
     echo "$name: newton $(sval "$out" newton_iterations) cutbacks $(sval "$out" cutbacks) waits $(sval "$out" contact_friction_jump_waits) $(tr '\n' ' ' < "$CASE_DIR/$name.check")"
     assert_eq "converged_$name" "$(sval "$out" converged)" yes || rc=1
@@ -199,25 +200,26 @@ test_cattaneo2d_alpha1000_jump_wait() {
   return $rc
 }
 
-# The chatter hold (-contact_chatter_flips 2, off by default; contact-enforce.c) on the full F2 and F5
+# The chatter hold (-contact_chatter_flips, 3 by default; contact-enforce.c) on the full F2 and F5
 # at alpha 1000, shifted. Without it a contact-edge point opens and closes at every Newton
 # iteration near the end of the shear (|F| 1e-5 and 3e-2 in turn): F2 163 Newton iterations and
-# 2 cut-backs, the stick zone -0.40 and +0.50 elements off; F5 205 and 3. With it 73 and 92, no
-# cut-back, the F2 zone centred (+0.10 and 1e-8 elements, as at alpha 10 and 100). Asserted: no
-# cut-back, at most 85 / 105 Newton iterations, the hold used, the loads balanced to 1e-8, creep
-# <= 1e-10 h, the stick zones within one element and F2's centred to 0.1 element; F2 the same on
-# 1, 2 and 3 ranks (1e-8). About 10 s per run.
+# 2 cut-backs, F5 205 and 3. With the default 75 and 92, no cut-back, the F2 zone -0.40 and -0.50
+# elements off (as without it); with N = 2 73 and no cut-back, the zone centred (+0.10 and 1e-8
+# elements, as at alpha 10 and 100). Asserted: no cut-back, at most 85 / 105 Newton iterations,
+# the hold used, the loads balanced to 1e-8, creep <= 1e-10 h, the stick zones within one element
+# (F2's centred to 0.1 element with N = 2); F2 with the default the same on 1, 2 and 3 ranks (1e-8).
+# About 10 s per run.
 test_cattaneo2d_alpha1000_chatter_hold() {
-  local rc=0 np
+  local rc=0 np name
   for np in 1 2 3; do
-    local name=ch_np$np out=$CASE_DIR/ch_np$np.txt
-    cm_run "$name" "$np" cm -options_file input/cattaneo2d.opts -contact_method shifted -contact_alpha 1000 -contact_chatter_flips 2 || return 1
-    assert_le "newton_$name" "$(sval "$out" newton_iterations)" 85 || rc=1
-    assert_ge "chatter_holds_$name" "$(sval "$out" contact_chatter_holds)" 1 || rc=1
-    f2_figures "$name" 0.1 || rc=1
+    name=ch_np$np
+    cm_run "$name" "$np" cm -options_file input/cattaneo2d.opts -contact_method shifted -contact_alpha 1000 || return 1
+    f2_chatter_figures "$name" 1 || rc=1
   done
   f2_same_ranks ch_ || rc=1
-  cm_run f5 1 unload -options_file input/cattaneo2d_unload.opts -contact_method shifted -contact_alpha 1000 -contact_chatter_flips 2 || return 1
+  cm_run ch2 1 cm -options_file input/cattaneo2d.opts -contact_method shifted -contact_alpha 1000 -contact_chatter_flips 2 || return 1
+  f2_chatter_figures ch2 0.1 || rc=1
+  cm_run f5 1 unload -options_file input/cattaneo2d_unload.opts -contact_method shifted -contact_alpha 1000 || return 1
   assert_le newton_f5 "$(sval "$CASE_DIR/f5.txt" newton_iterations)" 105 || rc=1
   assert_ge chatter_holds_f5 "$(sval "$CASE_DIR/f5.txt" contact_chatter_holds)" 1 || rc=1
   assert_close force_balance_y_f5 "$(sval "$CASE_DIR/f5.txt" contact_force_y)" 0.01 1e-8 || rc=1
@@ -226,15 +228,25 @@ test_cattaneo2d_alpha1000_chatter_hold() {
   assert_le centre_error_elements_f5 "$(cmabs f5 centre_error_elements)" 1 || rc=1
   return $rc
 }
+# f2_chatter_figures NAME CENTRE_BOUND: at most 85 Newton iterations, the hold used, F2's figures
+f2_chatter_figures() {
+  local rc=0
+  assert_le "newton_$1" "$(sval "$CASE_DIR/$1.txt" newton_iterations)" 85 || rc=1
+  assert_ge "chatter_holds_$1" "$(sval "$CASE_DIR/$1.txt" contact_chatter_holds)" 1 || rc=1
+  f2_figures "$1" "$2" || rc=1
+  return $rc
+}
 
-# F3 at alpha 1000 with the default step cap: the normal step cycles between active sets (doc/friction-benchmarks.md,
-# F3). With friction no load step is solved again with a tighter cap by itself, so the stall
-# message names -contact_step_cap (F3 converges with 0.1); the run stops with exit 2 and leaves
-# only .part files. One step, no cut-back, the stall after 8 iterations: about 40 s on 2 ranks.
+# F3 at alpha 1000 without the chatter hold (-contact_chatter_flips 0): the normal step cycles
+# between active sets (doc/friction-benchmarks.md, F3). Without the hold a frictional load step is
+# not solved again with a tighter cap, so the stall message names -contact_step_cap (F3 converges
+# with 0.1); the run stops with exit 2 and leaves only .part files. One step, no cut-back, the stall
+# after 8 iterations: about 40 s on 2 ranks. With the hold (the default) the normal step converges
+# (22 Newton iterations) and this run stops in its last step on GMRES's iteration limit.
 test_cattaneo3d_alpha1000_cycle_message() {
   local out=$CASE_DIR/f3_cycle.txt rc=0 code=0
   spc "$out" 2 -options_file input/cattaneo3d.opts -load_steps 5 -bc_2_ramp 0,0.2 -bc_3_ramp 0.2,1 -bc_4_ramp 0.2,1 \
-    -contact_alpha 1000 -load_max_cutbacks 0 -solver_stall_its 8 -output_dir "$CASE_DIR" -output_name f3_cycle || code=$?
+    -contact_alpha 1000 -contact_chatter_flips 0 -load_max_cutbacks 0 -solver_stall_its 8 -output_dir "$CASE_DIR" -output_name f3_cycle || code=$?
   assert_eq exit_code "$code" 2 || rc=1
   assert_eq cycle_message "$(grep -c '^solve stalled: .*(an active-set cycle).*, a tighter -contact_step_cap or' "$out")" 1 || rc=1
   assert_eq status "$(sval "$out" status)" failed || rc=1

@@ -92,7 +92,10 @@ test_units_cutback_floor() {
 # The recovery then solves the step again with the cap at 0.1 (once per step, one line) and it
 # converges without a cut-back: the force to 1e-8, 51 Newton iterations (15 of them stalled).
 # Without the step control (-contact_step_cap 0: no recovery either) both solves stall, the
-# cut-back budget ends the run, exit 2, before -snes_max_it (50) each.
+# cut-back budget ends the run, exit 2, before -snes_max_it (50) each. All of this without the
+# chatter hold (-contact_chatter_flips 0); with it (the default) the first solve stalls too and the
+# recovery converges in 56 Newton iterations, and without the step control the hold alone breaks
+# the cycle (37 Newton iterations, no cut-back).
 test_units_twopass_stall() {
   local out rc=0 code n
   out=$CASE_DIR/a100.txt
@@ -101,7 +104,7 @@ test_units_twopass_stall() {
   assert_eq converged_alpha100 "$(sval "$out" converged)" yes || rc=1
   assert_close force_alpha100 "$(sval "$out" contact_force_y)" 0.005 1e-8 || rc=1
   out=$CASE_DIR/a1000.txt
-  spc "$out" 1 -options_file input/hertz2d_twobody.opts -contact_two_pass -contact_alpha 1000 -load_max_cutbacks 1 -output_dir "$CASE_DIR" -output_name a1000 -output_fields false; code=$?
+  spc "$out" 1 -options_file input/hertz2d_twobody.opts -contact_two_pass -contact_alpha 1000 -contact_chatter_flips 0 -load_max_cutbacks 1 -output_dir "$CASE_DIR" -output_name a1000 -output_fields false; code=$?
   grep -E "^(solve stalled|stopping|load step|Newton did not)" "$out"
   assert_eq exit_code_alpha1000 "$code" 0 || rc=1
   assert_eq stall_lines_alpha1000 "$(grep -c '^solve stalled: neither the residual .* nor the gap error .* decreased in 15 Newton iterations (-solver_stall_its)' "$out")" 1 || rc=1
@@ -112,7 +115,7 @@ test_units_twopass_stall() {
   assert_le gap_error_alpha1000 "$(sval "$out" contact_gap_error)" "$(sval "$out" contact_gap_tol)" || rc=1
   assert_le newton_alpha1000 "$(sval "$out" newton_iterations)" 60 || rc=1
   out=$CASE_DIR/nocap.txt
-  spc "$out" 1 -options_file input/hertz2d_twobody.opts -contact_two_pass -contact_alpha 1000 -contact_step_cap 0 -load_max_cutbacks 1 -output_dir "$CASE_DIR" -output_name nocap -output_fields false; code=$?
+  spc "$out" 1 -options_file input/hertz2d_twobody.opts -contact_two_pass -contact_alpha 1000 -contact_chatter_flips 0 -contact_step_cap 0 -load_max_cutbacks 1 -output_dir "$CASE_DIR" -output_name nocap -output_fields false; code=$?
   grep -E "^(solve stalled|stopping|load step|Newton did not)" "$out"
   n=$(sval "$out" newton_iterations)
   assert_eq exit_code_nocap "$code" 2 || rc=1
@@ -156,20 +159,43 @@ test_units_twopass_alpha10() {
   return $rc
 }
 
-# The step-cap retry on 1, 2 and 3 ranks: B6 (one pass) at alpha 1000 stalls in its first Newton
-# solve (an active-set cycle) and converges when the step is solved again with the cap at 0.1: one
-# retry, no cut-back, the force to 1e-8, the same figures on every rank count (41 Newton
-# iterations each; 146 and 3 cut-backs before the retry existed)
+# The step-cap retry on 1, 2 and 3 ranks: B6 (one pass) at alpha 1000 without the chatter hold
+# (-contact_chatter_flips 0) stalls in its first Newton solve (an active-set cycle) and converges
+# when the step is solved again with the cap at 0.1: one retry, no cut-back, the force to 1e-8, the
+# same figures on every rank count (41 Newton iterations each; 146 and 3 cut-backs before the
+# retry existed). With the hold (the default) see test_units_chatter_hold_ranks.
 test_units_step_cap_retry_ranks() {
+  local rc=0
+  for np in 1 2 3; do
+    local out=$CASE_DIR/np$np.txt
+    spc "$out" "$np" -options_file input/hertz2d_twobody.opts -contact_alpha 1000 -contact_chatter_flips 0 -output_dir "$CASE_DIR" -output_name "np$np" -output_fields false || return 1
+    assert_eq "converged_np$np" "$(sval "$out" converged)" yes || rc=1
+    assert_eq "cutbacks_np$np" "$(sval "$out" cutbacks)" 0 || rc=1
+    assert_eq "retries_np$np" "$(sval "$out" contact_retries_step_cap)" 1 || rc=1
+    assert_close "force_np$np" "$(sval "$out" contact_force_y)" 0.005 1e-8 || rc=1
+    assert_le "newton_np$np" "$(sval "$out" newton_iterations)" 50 || rc=1
+  done
+  for np in 2 3; do
+    same_summary "$CASE_DIR/np1.txt" "$CASE_DIR/np$np.txt" 1e-8 contact_force_y contact_peak_pressure contact_active_points displacement_max || rc=1
+  done
+  return $rc
+}
+
+# The chatter hold (default -contact_chatter_flips 3, contact-enforce.c) on B6 at alpha 1000, 1, 2
+# and 3 ranks: the points of its first solve that plunge in, bounce out and come back stay closed,
+# so the solve does not stall: no retry, no cut-back, 19 Newton iterations (41 with the retry
+# above), the force to 1e-8, the same figures on every rank count
+test_units_chatter_hold_ranks() {
   local rc=0
   for np in 1 2 3; do
     local out=$CASE_DIR/np$np.txt
     spc "$out" "$np" -options_file input/hertz2d_twobody.opts -contact_alpha 1000 -output_dir "$CASE_DIR" -output_name "np$np" -output_fields false || return 1
     assert_eq "converged_np$np" "$(sval "$out" converged)" yes || rc=1
     assert_eq "cutbacks_np$np" "$(sval "$out" cutbacks)" 0 || rc=1
-    assert_eq "retries_np$np" "$(sval "$out" contact_retries_step_cap)" 1 || rc=1
+    assert_eq "retries_np$np" "$(sval "$out" contact_retries_step_cap)" 0 || rc=1
+    assert_ge "chatter_holds_np$np" "$(sval "$out" contact_chatter_holds)" 1 || rc=1
     assert_close "force_np$np" "$(sval "$out" contact_force_y)" 0.005 1e-8 || rc=1
-    assert_le "newton_np$np" "$(sval "$out" newton_iterations)" 50 || rc=1
+    assert_le "newton_np$np" "$(sval "$out" newton_iterations)" 25 || rc=1
   done
   for np in 2 3; do
     same_summary "$CASE_DIR/np1.txt" "$CASE_DIR/np$np.txt" 1e-8 contact_force_y contact_peak_pressure contact_active_points displacement_max || rc=1
