@@ -164,16 +164,20 @@ test_units_twopass_alpha10() {
 # when the step is solved again with the cap at 0.1: one retry, no cut-back, the force to 1e-8, the
 # same figures on every rank count (41 Newton iterations each; 146 and 3 cut-backs before the
 # retry existed). With the hold (the default) see test_units_chatter_hold_ranks.
-test_units_step_cap_retry_ranks() {
-  local rc=0
+test_units_step_cap_retry_ranks() { b6_alpha1000_ranks 1 50 -contact_chatter_flips 0; }
+# b6_alpha1000_ranks RETRIES NEWTON_MAX [options]: B6 at alpha 1000 on 1, 2 and 3 ranks converges
+# with RETRIES step-cap retries, no cut-back, at most NEWTON_MAX Newton iterations, the force to
+# 1e-8, the same figures on every rank count
+b6_alpha1000_ranks() {
+  local retries=$1 newton_max=$2 rc=0 np out; shift 2
   for np in 1 2 3; do
-    local out=$CASE_DIR/np$np.txt
-    spc "$out" "$np" -options_file input/hertz2d_twobody.opts -contact_alpha 1000 -contact_chatter_flips 0 -output_dir "$CASE_DIR" -output_name "np$np" -output_fields false || return 1
+    out=$CASE_DIR/np$np.txt
+    spc "$out" "$np" -options_file input/hertz2d_twobody.opts -contact_alpha 1000 "$@" -output_dir "$CASE_DIR" -output_name "np$np" -output_fields false || return 1
     assert_eq "converged_np$np" "$(sval "$out" converged)" yes || rc=1
     assert_eq "cutbacks_np$np" "$(sval "$out" cutbacks)" 0 || rc=1
-    assert_eq "retries_np$np" "$(sval "$out" contact_retries_step_cap)" 1 || rc=1
+    assert_eq "retries_np$np" "$(sval "$out" contact_retries_step_cap)" "$retries" || rc=1
     assert_close "force_np$np" "$(sval "$out" contact_force_y)" 0.005 1e-8 || rc=1
-    assert_le "newton_np$np" "$(sval "$out" newton_iterations)" 50 || rc=1
+    assert_le "newton_np$np" "$(sval "$out" newton_iterations)" "$newton_max" || rc=1
   done
   for np in 2 3; do
     same_summary "$CASE_DIR/np1.txt" "$CASE_DIR/np$np.txt" 1e-8 contact_force_y contact_peak_pressure contact_active_points displacement_max || rc=1
@@ -186,19 +190,10 @@ test_units_step_cap_retry_ranks() {
 # so the solve does not stall: no retry, no cut-back, 19 Newton iterations (41 with the retry
 # above), the force to 1e-8, the same figures on every rank count
 test_units_chatter_hold_ranks() {
-  local rc=0
+  local rc=0 np
+  b6_alpha1000_ranks 0 25 || rc=1
   for np in 1 2 3; do
-    local out=$CASE_DIR/np$np.txt
-    spc "$out" "$np" -options_file input/hertz2d_twobody.opts -contact_alpha 1000 -output_dir "$CASE_DIR" -output_name "np$np" -output_fields false || return 1
-    assert_eq "converged_np$np" "$(sval "$out" converged)" yes || rc=1
-    assert_eq "cutbacks_np$np" "$(sval "$out" cutbacks)" 0 || rc=1
-    assert_eq "retries_np$np" "$(sval "$out" contact_retries_step_cap)" 0 || rc=1
-    assert_ge "chatter_holds_np$np" "$(sval "$out" contact_chatter_holds)" 1 || rc=1
-    assert_close "force_np$np" "$(sval "$out" contact_force_y)" 0.005 1e-8 || rc=1
-    assert_le "newton_np$np" "$(sval "$out" newton_iterations)" 25 || rc=1
-  done
-  for np in 2 3; do
-    same_summary "$CASE_DIR/np1.txt" "$CASE_DIR/np$np.txt" 1e-8 contact_force_y contact_peak_pressure contact_active_points displacement_max || rc=1
+    assert_ge "chatter_holds_np$np" "$(sval "$CASE_DIR/np$np.txt" contact_chatter_holds)" 1 || rc=1
   done
   return $rc
 }
