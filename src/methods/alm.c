@@ -6,7 +6,7 @@
 static PetscErrorCode SetFromOptions(PetscOptionItems *PetscOptionsObject, SPMethodParams *p)
 {
   PetscFunctionBeginUser;
-  p->maxUpdates = 30;
+  p->maxUpdates = 50; /* two-pass B6 at alpha 10 needs 40 (30: 515 Newton iterations, 3 cut-backs -> 58, none); every other input at most 18 */
   p->maxOption  = "-contact_alm_max";
   PetscCall(PetscOptionsInt("-contact_alm_max", "alm: maximum number of augmentations per load step", "SPContactSetFromOptions", p->maxUpdates, &p->maxUpdates, NULL));
   PetscCheck(p->maxUpdates >= 1, PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "-contact_alm_max %" PetscInt_FMT ": need at least 1 augmentation", p->maxUpdates);
