@@ -281,7 +281,7 @@ struct _n_SPContact {
   SPShiftAccel    accelT;    /* the same for the tangential shifts of stuck points (2 slots per point) */
   PetscReal      *accTS, *accTG, *accTNew;
   PetscBool      *accTIn;
-  PetscInt       *known;     /* per point: master facets already in the Jacobian pattern */
+  PetscInt       *known;     /* per point: (facet, anchor facet) pairs already in the Jacobian pattern */
   /* evaluation cache: the state the geometry was last evaluated at */
   Vec             evalX;       /* copy of the displacement of the last evaluation (NULL: none yet) */
   PetscReal       evalLoad;    /* its load factor */

@@ -109,7 +109,7 @@ PETSC_EXTERN PetscErrorCode SPContactCommitStep(SPContact, Vec);
 PETSC_EXTERN PetscErrorCode SPContactPredictRecord(SPContact);
 PETSC_EXTERN void           SPContactPredictNext(SPContact, PetscReal);
 PETSC_EXTERN PetscErrorCode SPContactMonitor(SPContact, PetscInt, PetscReal);
-PETSC_EXTERN PetscErrorCode SPContactReportStep(SPContact, Vec, PetscInt, PetscReal);
+PETSC_EXTERN PetscErrorCode SPContactReportStep(SPContact, Vec, PetscInt, PetscReal, PetscBool);
 PETSC_EXTERN PetscErrorCode SPContactSaveState(SPContact);
 PETSC_EXTERN PetscErrorCode SPContactRestoreState(SPContact);
 PETSC_EXTERN PetscErrorCode SPContactGetFields(SPContact, Vec, Vec, Vec, Vec, Vec);

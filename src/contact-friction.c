@@ -116,6 +116,10 @@ PetscErrorCode SPFrictionElementDofs(SPContact c, PetscInt i, PetscInt *nd, Pets
   }
   if (pt->st.anchor >= 0) {
     fa = FindFacet(c, pt->geo.elem, pt->st.anchor);
+    if (fa < 0) { /* not held by this rank: anchorLost, or a fresh point (no friction; the pattern's anticipation) */
+      *nd = 0;
+      PetscFunctionReturn(PETSC_SUCCESS);
+    }
     if (fa == pt->geo.elem) off = dim;
     else {
       off = nd0;

@@ -1,7 +1,8 @@
 /* The Jacobian's nonzero pattern with the contact-pair couplings (slave vertex <-> master facet
    vertices, possibly on other ranks). DMCreateMatrix preallocates the bulk pattern only. Before
    each Jacobian assembly, SPContactSetUpJacobian checks that every active pair element's block is
-   already in the pattern (each point remembers the global numbers of the master facets it was coupled to); if any is
+   already in the pattern (each point remembers the global numbers of the master facets it was coupled to, with
+   its friction anchor's facet: the friction element couples both); if any is
    missing on any rank, the pattern is rebuilt: a MATPREALLOCATOR receives the current pattern of P
    (row by row) plus the blocks of every current pair element (active or not, to anticipate), and
    MatPreallocatorPreallocate re-preallocates P in place and fills it with zeros. The pattern only
@@ -10,19 +11,23 @@
 #include <spcontact-impl.h>
 
 
-static PetscBool Known(SPContact c, PetscInt i, PetscInt f)
+/* Whether point i's element on master facet f with its friction anchor on facet a (a = f: the
+   normal element alone) is in the pattern. The pair matters: the friction element couples the two
+   facets' vertices, a block that neither facet's element alone holds. */
+static PetscBool Known(SPContact c, PetscInt i, PetscInt f, PetscInt a)
 {
-  for (PetscInt k = 0; k < SP_KNOWN_FACETS; ++k)
-    if (c->known[i * SP_KNOWN_FACETS + k] == f) return PETSC_TRUE;
+  const PetscInt *k = &c->known[2 * i * SP_KNOWN_FACETS];
+  for (PetscInt j = 0; j < SP_KNOWN_FACETS; ++j)
+    if (k[2 * j] == f && k[2 * j + 1] == a) return PETSC_TRUE;
   return PETSC_FALSE;
 }
 
-static void Remember(SPContact c, PetscInt i, PetscInt f)
+static void Remember(SPContact c, PetscInt i, PetscInt f, PetscInt a)
 {
-  PetscInt *k = &c->known[i * SP_KNOWN_FACETS];
-  if (Known(c, i, f)) return;
-  for (PetscInt j = SP_KNOWN_FACETS - 1; j > 0; --j) k[j] = k[j - 1]; /* forget the oldest: at worst a spurious rebuild */
-  k[0] = f;
+  PetscInt *k = &c->known[2 * i * SP_KNOWN_FACETS];
+  if (Known(c, i, f, a)) return;
+  for (PetscInt j = SP_KNOWN_FACETS - 1; j > 0; --j) k[2 * j] = k[2 * (j - 1)], k[2 * j + 1] = k[2 * (j - 1) + 1]; /* forget the oldest: at worst a spurious rebuild */
+  k[0] = f, k[1] = a;
 }
 
 /* P's pattern plus the blocks of every current pair element, into P (zero filled) */
@@ -62,11 +67,12 @@ static PetscErrorCode Rebuild(SPContact c, Mat P)
     if (c->pt[i].geo.elem < 0) continue;
     PetscCall(SPContactPointElement(c, i, &nd, dofs, &A, Nv, NULL));
     PetscCall(MatSetValues(pre, nd, dofs, nd, dofs, zeros, INSERT_VALUES));
-    Remember(c, i, c->mf[c->pt[i].geo.elem].gid);
+    Remember(c, i, c->mf[c->pt[i].geo.elem].gid, c->mf[c->pt[i].geo.elem].gid);
     if (!c->friction || !c->pt[i].st.anchored || c->pt[i].st.anchor < 0) continue;
-    PetscCall(SPFrictionElementDofs(c, i, &nd, dofs, Nv, BT, &A)); /* the anchor facet's block too */
-    if (nd) PetscCall(MatSetValues(pre, nd, dofs, nd, dofs, zeros, INSERT_VALUES));
-    Remember(c, i, c->pt[i].st.anchor);
+    PetscCall(SPFrictionElementDofs(c, i, &nd, dofs, Nv, BT, &A)); /* the anchor facet's block too, and the two facets' cross block */
+    if (!nd) continue;
+    PetscCall(MatSetValues(pre, nd, dofs, nd, dofs, zeros, INSERT_VALUES));
+    Remember(c, i, c->mf[c->pt[i].geo.elem].gid, c->pt[i].st.anchor);
   }
   PetscCall(MatAssemblyBegin(pre, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(pre, MAT_FINAL_ASSEMBLY));
@@ -89,8 +95,8 @@ PetscErrorCode SPContactSetUpJacobian(SPContact c, Vec X, Mat P)
   for (PetscInt i = 0; i < c->n && !missing; ++i) {
     const SPContactPoint *pt = &c->pt[i];
     if (pt->geo.elem < 0 || !SPContactPointActive(c, i)) continue;
-    if (!Known(c, i, c->mf[pt->geo.elem].gid)) missing = 1;
-    if (c->friction && pt->geo.mu > 0.0 && pt->st.anchored && pt->st.anchor >= 0 && !pt->geo.anchorLost && !Known(c, i, pt->st.anchor)) missing = 1;
+    if (!Known(c, i, c->mf[pt->geo.elem].gid, c->mf[pt->geo.elem].gid)) missing = 1;
+    if (c->friction && pt->geo.mu > 0.0 && pt->st.anchored && pt->st.anchor >= 0 && !pt->geo.anchorLost && !Known(c, i, c->mf[pt->geo.elem].gid, pt->st.anchor)) missing = 1;
   }
   PetscCallMPI(MPI_Allreduce(&missing, &any, 1, MPIU_INT, MPI_MAX, PetscObjectComm((PetscObject)P)));
   if (!any) PetscFunctionReturn(PETSC_SUCCESS);

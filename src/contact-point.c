@@ -46,8 +46,8 @@ static PetscErrorCode CollectPoints(SPContact c)
   PetscCall(VecGetOwnershipRange(v, &c->rstart, NULL));
   PetscCall(VecDestroy(&v));
   PetscCall(PetscCalloc4(c->n, &c->pt, c->n, &c->saved, c->n, &c->gapStart, 3 * c->n, &c->slipStart));
-  PetscCall(PetscCalloc1(c->n * SP_KNOWN_FACETS, &c->known));
-  for (PetscInt i = 0; i < c->n * SP_KNOWN_FACETS; ++i) c->known[i] = -1;
+  PetscCall(PetscCalloc1(2 * c->n * SP_KNOWN_FACETS, &c->known));
+  for (PetscInt i = 0; i < 2 * c->n * SP_KNOWN_FACETS; ++i) c->known[i] = -1;
   PetscCall(DMGetCoordinatesLocal(c->dm, &coords));
   PetscCall(DMGetCoordinateSection(c->dm, &cs));
   PetscCall(VecGetArrayRead(coords, &ca));

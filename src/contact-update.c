@@ -514,19 +514,28 @@ PetscErrorCode SPContactMonitor(SPContact c, PetscInt it, PetscReal fnorm)
 }
 
 /* Contact pairs: one line per converged load step (force on the slave and on the master
-   surfaces, max penetration, peak pressure), so load paths (sliding) can be checked step by step */
-PetscErrorCode SPContactReportStep(SPContact c, Vec X, PetscInt step, PetscReal load)
+   surfaces, dim components each, max penetration, peak pressure), so load paths (sliding) can be
+   checked step by step; print false (-quiet): the same evaluation, no line */
+PetscErrorCode SPContactReportStep(SPContact c, Vec X, PetscInt step, PetscReal load, PetscBool print)
 {
   PetscReal pen = 0.0, all;
+  MPI_Comm  comm;
+  char      fs[128] = "", fm[128] = "";
 
   PetscFunctionBeginUser;
   if (!c->enabled || !c->npair) PetscFunctionReturn(PETSC_SUCCESS);
+  comm = PetscObjectComm((PetscObject)c->dm);
   PetscCall(SPContactEvaluate(c, X));
   PetscCall(SPContactComputeStats(c));
   for (PetscInt i = 0; i < c->n; ++i)
     if (c->pt[i].geo.elem != SP_ELEM_NONE) pen = PetscMax(pen, -c->pt[i].geo.gap);
-  PetscCallMPI(MPI_Allreduce(&pen, &all, 1, MPIU_REAL, MPI_MAX, PetscObjectComm((PetscObject)c->dm)));
-  PetscCall(PetscPrintf(PetscObjectComm((PetscObject)c->dm), "contact_step %" PetscInt_FMT " load %.6f force %.12e %.12e master_force %.12e %.12e max_penetration %.6e peak_pressure %.10e\n", step, (double)load, (double)c->stats.force[0], (double)c->stats.force[1], (double)c->stats.forceMaster[0], (double)c->stats.forceMaster[1], (double)all, (double)c->stats.peakPressure));
+  PetscCallMPI(MPI_Allreduce(&pen, &all, 1, MPIU_REAL, MPI_MAX, comm));
+  if (!print) PetscFunctionReturn(PETSC_SUCCESS);
+  for (PetscInt d = 0; d < c->dim; ++d) {
+    PetscCall(PetscSNPrintf(fs + strlen(fs), sizeof(fs) - strlen(fs), " %.12e", (double)c->stats.force[d]));
+    PetscCall(PetscSNPrintf(fm + strlen(fm), sizeof(fm) - strlen(fm), " %.12e", (double)c->stats.forceMaster[d]));
+  }
+  PetscCall(PetscPrintf(comm, "contact_step %" PetscInt_FMT " load %.6f force%s master_force%s max_penetration %.6e peak_pressure %.10e\n", step, (double)load, fs, fm, (double)all, (double)c->stats.peakPressure));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

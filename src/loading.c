@@ -143,7 +143,7 @@ PetscErrorCode SPLoadingRun(SPApp app)
       PetscCall(PetscLogStagePush(app->log.output)); /* stage times are exclusive: output leaves "SP solve" */
       PetscCall(SPOutputWriteStep(app->output, app->problem, app->u, app->contact));
       PetscCall(PetscLogStagePop());
-      PetscCall(SPContactReportStep(app->contact, app->u, step, load));
+      PetscCall(SPContactReportStep(app->contact, app->u, step, load, app->progress.quiet ? PETSC_FALSE : PETSC_TRUE));
       PetscCall(SPLogProgress(app, step, step + (PetscInt)PetscCeilReal((1.0 - done) / inc - 1e-6), load, its0, lits0));
       PetscCall(SPSolverGetCounts(app->solver, &its0, &lits0, NULL));
       app->stepsDone = step, app->loadReached = done;

@@ -64,6 +64,26 @@ test_cattaneo2d_f2_shifted() {
   return $rc
 }
 
+# F2 in 3 load steps (the normal load and a third of the shear in step 1): a point that closes in
+# step 1 is fresh (no friction until committed) and its anchor facet need not be among the master
+# facets its rank holds; the pattern rebuild then read the facet table at -1 (a segfault in step 1
+# on 1 and 2 ranks, since fixed). Friction during the normal load moves the stick zone (friction.md's
+# table), so only the balance and the creep are asserted, and ranks 1 and 2 agree.
+test_cattaneo2d_three_steps_fresh_anchor() {
+  local rc=0 np out
+  for np in 1 2; do
+    out=$CASE_DIR/np$np.txt
+    spc "$out" $np -options_file input/cattaneo2d.opts -load_steps 3 -output_dir "$CASE_DIR" -output_name np$np -output_fields false || return 1
+    echo "np $np: newton $(sval "$out" newton_iterations) cutbacks $(sval "$out" cutbacks) F_x $(sval "$out" contact_force_x) F_y $(sval "$out" contact_force_y) creep $(sval "$out" contact_max_stick_creep)"
+    assert_eq "converged_np$np" "$(sval "$out" converged)" yes || rc=1
+    assert_close "force_x_np$np" "$(sval "$out" contact_force_x)" -0.0015 1e-8 || rc=1
+    assert_close "force_y_np$np" "$(sval "$out" contact_force_y)" 0.01 1e-8 || rc=1
+    assert_le "stick_creep_np$np" "$(sval "$out" contact_max_stick_creep)" 5e-13 || rc=1
+  done
+  same_summary "$CASE_DIR/np1.txt" "$CASE_DIR/np2.txt" 1e-8 contact_force_x contact_force_y contact_stick_points contact_slip_points || rc=1
+  return $rc
+}
+
 # F2 on the rigid-top-edge set-up (input/cattaneo2d_rigid.opts: point-symmetric, the normal phase
 # in 30 steps, then the slide in 10), against CM at the measured P and Q (Q/(mu P) = 0.524): stick
 # zone centred (1e-8 elements) and its half-width within one element of c; 1 and 2 ranks identical
