@@ -520,6 +520,7 @@ struct _n_SPApp {
   SPOutput  output;
   Vec       u;
   PetscInt  loadSteps, maxCutbacks, stepsDone, cutbacks;
+  PetscInt  debugErrorRank; /* -debug_error_on_rank: this rank alone raises an error before the first step (tests; -1 none) */
   PetscInt  cells, vertices; /* global mesh counts (MeshCounts, once) */
   PetscInt  growAfter, streak; /* the increment doubles after growAfter converged steps in a row (streak) */
   PetscReal minIncrement, maxWallTime; /* cut-back floor (load factor); seconds (0: none) */

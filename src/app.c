@@ -11,6 +11,7 @@ PetscErrorCode SPAppCreate(MPI_Comm comm, SPApp *app)
   a->loadSteps   = 1;
   a->loadBefore  = -1.0; /* no converged step before the first */
   a->maxCutbacks = 20;
+  a->debugErrorRank = -1;
   a->minIncrement = 1e-4;
   a->growAfter    = 4;
   a->progress.interval = 10.0;
@@ -30,6 +31,7 @@ static PetscErrorCode LoadingSetFromOptions(SPApp a)
   PetscCall(PetscOptionsInt("-load_steps", "Number of load steps (load factor k/N scales loads, Dirichlet values, obstacle motion)", "SPAppSetUp", a->loadSteps, &a->loadSteps, NULL));
   PetscCall(PetscOptionsString("-restart", "Resume a load-stepped run from the last converged step stored in this .h5 (or .h5.part) file of an interrupted or failed run (same mesh and options, any rank count)", "SPAppSetUp", a->restartFile, a->restartFile, sizeof(a->restartFile), NULL));
   PetscCall(PetscOptionsInt("-debug_interrupt_after_step", "Testing: rank 0 raises SIGTERM after this converged load step (0: never)", "SPAppSetUp", a->signals.debugStep, &a->signals.debugStep, NULL));
+  PetscCall(PetscOptionsInt("-debug_error_on_rank", "Testing: this rank alone raises a one-line error before the first load step, as an internal error would (-1: never)", "SPAppSetUp", a->debugErrorRank, &a->debugErrorRank, NULL));
   PetscCall(PetscOptionsInt("-load_max_cutbacks", "Budget of the run: total times a failing load increment may be halved before the run stops", "SPAppSetUp", a->maxCutbacks, &a->maxCutbacks, NULL));
   PetscCall(PetscOptionsInt("-load_grow_after", "After a cut-back, double the increment (up to 1/load_steps) after this many converged steps in a row (0: never)", "SPAppSetUp", a->growAfter, &a->growAfter, NULL));
   PetscCall(PetscOptionsReal("-load_min_increment", "Floor of the cut-back: the run stops rather than halve the load-factor increment below this", "SPAppSetUp", a->minIncrement, &a->minIncrement, NULL));

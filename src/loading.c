@@ -122,6 +122,11 @@ PetscErrorCode SPLoadingRun(SPApp app)
   Vec       ubackup;
 
   PetscFunctionBeginUser;
+  if (app->debugErrorRank >= 0) { /* tests: an error on one rank alone must stop every rank (main.c) */
+    PetscMPIInt rank;
+    PetscCallMPI(MPI_Comm_rank(app->comm, &rank));
+    PetscCheck(rank != app->debugErrorRank, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "-debug_error_on_rank %d: a test error raised by this rank alone", rank);
+  }
   PetscCall(VecDuplicate(app->u, &ubackup));
   PetscCall(SPSolverGetCounts(app->solver, &its0, &lits0, NULL));
   app->converged = PETSC_TRUE;

@@ -4,6 +4,7 @@ static const char help[] = "spcontact: parallel FEM contact mechanics with the s
 #define _POSIX_C_SOURCE 200112L /* setenv */
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 #include <unistd.h>
 #include <spcontact.h>
 
@@ -29,18 +30,66 @@ static int OneLine(PetscErrorCode n)
   return n == PETSC_ERR_USER_INPUT || n == PETSC_ERR_USER || n == PETSC_ERR_ARG_OUTOFRANGE || n == PETSC_ERR_ARG_WRONG || n == PETSC_ERR_ARG_UNKNOWN_TYPE || n == PETSC_ERR_FILE_WRITE;
 }
 
-/* User-input errors print one line on rank 0 (no PETSc traceback); everything else keeps
-   PETSc's full traceback. Set SPCONTACT_TRACEBACK=1 to see the traceback for input errors. */
+/* The first one-line error of this rank (main prints it once it knows which ranks raised it) */
+typedef struct {
+  char message[512];
+  int  set;
+} OneLineError;
+
+/* User-input errors are kept for one line (no PETSc traceback); everything else keeps PETSc's
+   full traceback. Set SPCONTACT_TRACEBACK=1 to see the traceback for input errors. */
 static PetscErrorCode ErrorHandler(MPI_Comm comm, int line, const char *fun, const char *file, PetscErrorCode n, PetscErrorType p, const char *mess, void *ctx)
 {
-  PetscMPIInt rank = 0;
+  OneLineError *e = (OneLineError *)ctx;
   if (p != PETSC_ERROR_INITIAL) return n;
   if (OneLine(n) && !getenv("SPCONTACT_TRACEBACK")) {
-    MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
-    if (rank == 0) fprintf(stderr, "spcontact: error: %s%s\n", mess ? mess : "(no message)", n == PETSC_ERR_ARG_UNKNOWN_TYPE ? "; check the option's spelling (-help lists the types)" : "");
+    if (e->set) return n;
+    (void)snprintf(e->message, sizeof(e->message), "%s%s", mess ? mess : "(no message)", n == PETSC_ERR_ARG_UNKNOWN_TYPE ? "; check the option's spelling (-help lists the types)" : "");
+    for (char *c = e->message; *c; ++c)
+      if (*c == '\n') *c = ' ';
+    e->set = 1;
     return n;
   }
   return PetscTraceBackErrorHandler(comm, line, fun, file, n, p, mess, ctx);
+}
+
+/* Whether every rank stopped with the error within 10 s: input errors are checked collectively
+   (every rank raises them at the same point). A rank that raised one alone (an internal error)
+   would otherwise wait forever in MPI_Finalize while the others wait in the run's next
+   collective. */
+static int EveryRankFailed(void)
+{
+  MPI_Request           req;
+  int                   size, done = 0;
+  const double          t0 = MPI_Wtime();
+  const struct timespec ms = {0, 1000000};
+
+  MPI_Comm_size(PETSC_COMM_WORLD, &size);
+  if (size == 1) return 1;
+  if (MPI_Ibarrier(PETSC_COMM_WORLD, &req) != MPI_SUCCESS) return 0;
+  while (!done && MPI_Wtime() - t0 < 10.0) {
+    if (MPI_Test(&req, &done, MPI_STATUS_IGNORE) != MPI_SUCCESS) return 0;
+    if (!done) (void)nanosleep(&ms, NULL);
+  }
+  return done;
+}
+
+/* One line: on rank 0 when every rank raised the error; else on each rank that did, and every
+   rank stops (MPI_Abort) */
+static int ReportOneLine(const OneLineError *e)
+{
+  PetscMPIInt rank;
+  MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
+  if (EveryRankFailed()) {
+    if (rank == 0) fprintf(stderr, "spcontact: error: %s\n", e->message);
+    (void)PetscPopErrorHandler();
+    (void)PetscFinalize();
+    return 1;
+  }
+  fprintf(stderr, "spcontact: error: %s (raised on rank %d only: the other ranks are stopped)\n", e->message, rank);
+  fflush(NULL);
+  MPI_Abort(PETSC_COMM_WORLD, 1);
+  return 1;
 }
 
 /* Options nobody read (a misspelt name, or an option for another kind of run) are reported on
@@ -92,21 +141,21 @@ int main(int argc, char **argv)
   PetscErrorCode ierr;
   PetscBool      converged = PETSC_FALSE;
   int            interrupted = 0; /* the signal that stopped the run */
+  OneLineError   oneLine     = {"", 0};
 
   if (SPCheckOptionsFiles(argc, argv)) return 1; /* before PetscInitialize reads them */
   SingletonMPI();
   PetscCall(PetscInitialize(&argc, &argv, NULL, help));
-  PetscCall(PetscPushErrorHandler(ErrorHandler, NULL));
+  PetscCall(PetscPushErrorHandler(ErrorHandler, &oneLine));
   ierr = Run(&converged, &interrupted);
   if (ierr == PETSC_ERR_FILE_WRITE) { /* an output write failed: its h5 cannot be closed, and */
-    fflush(NULL);                     /* HDF5 would crash closing it in MPI_Finalize (output-guard.c) */
+    PetscMPIInt rank;                 /* HDF5 would crash closing it in MPI_Finalize (output-guard.c) */
+    MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
+    if (rank == 0 && oneLine.set) fprintf(stderr, "spcontact: error: %s\n", oneLine.message); /* collective (h5) or rank 0 (CSV) */
+    fflush(NULL);
     _exit(1);
   }
-  if (OneLine(ierr)) {
-    (void)PetscPopErrorHandler();
-    (void)PetscFinalize();
-    return 1; /* bad input or a failed write: one line on stderr */
-  }
+  if (OneLine(ierr)) return ReportOneLine(&oneLine); /* bad input: one line on stderr */
   if (ierr) PETSCABORT(PETSC_COMM_WORLD, ierr);
   PetscCall(ReportUnusedOptions());
   if (interrupted) { /* SPLoadingRun printed how to restart */

@@ -225,3 +225,26 @@ test_bad_input_disk_full_np2() {
   assert_eq "files" "$(cd "$CASE_DIR" && ls s.* | tr '\n' ' ')" "s.csv.part s.h5.part " || rc=1
   return $rc
 }
+
+# A one-line error raised by one rank alone (an internal error such as a PETSc argument check,
+# not an input check, which every rank raises together) used to leave the other ranks waiting in
+# the run's next collective: the job hung (found with friction on a 3D pair, since fixed). Now the
+# rank waits at most 10 s for the others, then prints the line naming its rank and stops the job
+# (MPI_Abort). -debug_error_on_rank R makes rank R raise such an error before the first load step.
+test_bad_input_error_on_one_rank() {
+  local rc=0 code t0 t1
+  RERUN="timeout 120 $MPIEXEC -n 2 $SPC -options_file input/hertz2d.opts -debug_error_on_rank 1 -output_dir $CASE_DIR"
+  t0=$(date +%s)
+  timeout 120 $MPIEXEC -n 2 $SPC -options_file input/hertz2d.opts -debug_error_on_rank 1 -output_dir "$CASE_DIR" >"$CASE_DIR/np2.txt" 2>&1; code=$?
+  t1=$(date +%s)
+  grep '^spcontact' "$CASE_DIR/np2.txt"
+  echo "np 2: exit $code after $((t1 - t0)) s"
+  assert_ge "exit code np2 (not 0)" "$code" 1 || rc=1
+  assert_le "exit code np2 (124: the hang)" "$code" 123 || rc=1
+  assert_eq "error line np2" "$(grep -c '^spcontact: error: -debug_error_on_rank 1: a test error raised by this rank alone (raised on rank 1 only: the other ranks are stopped)$' "$CASE_DIR/np2.txt")" 1 || rc=1
+  assert_eq "summary np2" "$(grep -c '^=== spcontact summary ===' "$CASE_DIR/np2.txt")" 0 || rc=1
+  timeout 60 $MPIEXEC -n 1 $SPC -options_file input/hertz2d.opts -debug_error_on_rank 0 -output_dir "$CASE_DIR" >"$CASE_DIR/np1.txt" 2>&1; code=$?
+  assert_eq "exit code np1" "$code" 1 || rc=1
+  assert_eq "error line np1 (one rank: the plain line)" "$(grep -c '^spcontact: error: -debug_error_on_rank 0: a test error raised by this rank alone$' "$CASE_DIR/np1.txt")" 1 || rc=1
+  return $rc
+}
