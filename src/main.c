@@ -74,12 +74,39 @@ static int EveryRankFailed(void)
   return done;
 }
 
+/* PETSc's messages for a value it cannot read name the value, not the option ("Input string abc
+   has no numeric value", "Unknown logical value: abc"): the option given that value is found in
+   the database and named: "-contact_alpha abc: not a number" */
+static void NameTheOption(char msg[], size_t n)
+{
+  static const char *const lead[2] = {"Input string ", "Unknown logical value: "};
+  static const char *const what[2] = {"not a number", "not true or false"};
+  char                     value[128] = "", *all = NULL, *tok, *save = NULL, prev[256] = "", name[256] = "";
+
+  for (int k = 0; k < 2; ++k) {
+    size_t len;
+    if (strncmp(msg, lead[k], strlen(lead[k]))) continue;
+    (void)snprintf(value, sizeof(value), "%s", msg + strlen(lead[k]));
+    len = strcspn(value, " ");
+    value[len] = 0;
+    if (!len || PetscOptionsGetAll(NULL, &all)) return;
+    for (tok = strtok_r(all, " ", &save); tok; tok = strtok_r(NULL, " ", &save)) {
+      if (!strcmp(tok, value) && prev[0] == '-') (void)snprintf(name, sizeof(name), "%s", prev);
+      (void)snprintf(prev, sizeof(prev), "%s", tok);
+    }
+    (void)PetscFree(all);
+    if (name[0]) (void)snprintf(msg, n, "%s %s: %s", name, value, strstr(msg, "integer") ? "not an integer" : what[k]);
+    return;
+  }
+}
+
 /* One line: on rank 0 when every rank raised the error; else on each rank that did, and every
    rank stops (MPI_Abort) */
-static int ReportOneLine(const OneLineError *e)
+static int ReportOneLine(OneLineError *e)
 {
   PetscMPIInt rank;
   MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
+  NameTheOption(e->message, sizeof(e->message));
   if (EveryRankFailed()) {
     if (rank == 0) fprintf(stderr, "spcontact: error: %s\n", e->message);
     (void)PetscPopErrorHandler();

@@ -248,3 +248,21 @@ test_bad_input_error_on_one_rank() {
   assert_eq "error line np1 (one rank: the plain line)" "$(grep -c '^spcontact: error: -debug_error_on_rank 0: a test error raised by this rank alone$' "$CASE_DIR/np1.txt")" 1 || rc=1
   return $rc
 }
+
+# A value PETSc cannot read: the line names the option (PETSc's own message names only the value)
+test_bad_input_value_names_option() {
+  local rc=0 args want code
+  while IFS='|' read -r args want; do
+    # shellcheck disable=SC2086
+    timeout 60 $SPC -options_file input/hertz2d.opts -output_dir "$CASE_DIR" $args >/dev/null 2>"$CASE_DIR/e.txt"; code=$?
+    echo "$args: exit $code: $(cat "$CASE_DIR/e.txt")"
+    assert_eq "exit code ($args)" "$code" 1 || rc=1
+    assert_eq "line ($args)" "$(cat "$CASE_DIR/e.txt")" "spcontact: error: $want" || rc=1
+  done <<'CASES'
+-contact_alpha abc|-contact_alpha abc: not a number
+-load_steps 2.5|-load_steps 2.5: not an integer
+-contact_two_pass maybe|-contact_two_pass maybe: not true or false
+-ksp_rtol 1e-3x|-ksp_rtol 1e-3x: not a number
+CASES
+  return $rc
+}
