@@ -342,7 +342,7 @@ static PetscInt PointState(PetscBool pack, SPContactPoint *p, PetscReal *anchor,
 {
   SPPointState *st = &p->st;
   PetscReal     pv = (PetscReal)p->prev.status;
-  PetscReal     e[6] = {(PetscReal)st->status, (PetscReal)st->active, (PetscReal)st->inactiveCount, (PetscReal)st->flips, (PetscReal)st->reversed, st->anchored ? (st->fresh ? 2.0 : 1.0) : 0.0}; /* anchored, 2: fresh */
+  PetscReal     e[6] = {(PetscReal)st->status, (PetscReal)st->active, (PetscReal)st->inactiveCount, (PetscReal)st->flips, (PetscReal)st->reversed, st->anchored ? (st->fresh ? 2.0 : 1.0) + (st->basisStale ? 4.0 : 0.0) : 0.0}; /* anchored, 2: fresh; + 4: the committed basis is refreshed at the next solve's start (files before it: 0-2) */
   PetscReal     X[3] = {p->X[0], p->X[1], p->X[2]};
   PetscInt      k = 0;
 
@@ -372,6 +372,8 @@ static PetscInt PointState(PetscBool pack, SPContactPoint *p, PetscReal *anchor,
     st->inactiveCount = (PetscInt)e[2];
     st->flips         = (PetscInt)e[3];
     st->reversed      = e[4] != 0.0 ? PETSC_TRUE : PETSC_FALSE;
+    st->basisStale    = e[5] >= 4.0 ? PETSC_TRUE : PETSC_FALSE;
+    if (st->basisStale) e[5] -= 4.0;
     st->anchored      = e[5] != 0.0 ? PETSC_TRUE : PETSC_FALSE;
     st->fresh         = e[5] == 2.0 ? PETSC_TRUE : PETSC_FALSE;
   }

@@ -108,6 +108,10 @@ test_restart_b2_shifted_1to2()    { RS_NP=2 rs_case 1 -options_file input/hertz2
 # two-pass default (Anderson) F4 in 10 steps then takes 83 to 85 Newton iterations from run to run.
 test_restart_friction_patch_1to3() { RS_NP=3 rs_case 1 -options_file input/friction_patch_4_5.opts -contact_shift_accel none; }
 test_restart_friction_patch_3to1() { RS_NP=1 rs_case 3 -options_file input/friction_patch_4_5.opts -contact_shift_accel none; }
+# Friction on a sliding pair, 2 ranks -> 1: the points' flag that refreshes the committed tangent
+# basis at the next solve's start is in the file (without it the restarted run kept the stale
+# basis: forces 1e-6 off the uninterrupted run's)
+test_restart_friction_pair_slide_2to1() { RS_NP=1 rs_case 2 -options_file input/slide2d.opts -contact_friction_mu 0.3; }
 
 # rs_kill SIG CODE: a real signal from outside (1 rank, no launcher): the run stops after the step
 # it is in, exits with CODE (128 + signal), the file says interrupted and holds that many steps
