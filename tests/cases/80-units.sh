@@ -137,31 +137,31 @@ test_units_twopass_stall() {
 # asked for, still ends within the budget (-load_max_cutbacks 1: 4 solves of -snes_max_it 50).
 # alm (Anderson across its augmentations) needs 40 augmentations, 58 Newton iterations: with the
 # old budget of 30 it took 515 and 3 cut-backs.
+# twopass_a10 TAG NEWTON_MAX [options]: two-pass B6 at alpha 10 on 1 and 2 ranks: converged in one
+# step (no cut-back, no step-cap retry), at most NEWTON_MAX Newton iterations, the force to 1e-8,
+# the gap tolerance met, the same figures on both rank counts
+twopass_a10() {
+  local tag=$1 nmax=$2 rc=0 np out; shift 2
+  for np in 1 2; do
+    out=$CASE_DIR/$tag$np.txt
+    spc "$out" $np -options_file input/hertz2d_twobody.opts -contact_two_pass -contact_alpha 10 "$@" -output_dir "$CASE_DIR" -output_name $tag$np -output_fields false || return 1
+    echo "$tag np $np: newton $(sval "$out" newton_iterations) accel $(sval "$out" contact_shift_accel) steps $(sval "$out" contact_shift_accel_steps) augmentations $(sval "$out" contact_augmentations) force $(sval "$out" contact_force_y)"
+    assert_eq "${tag}_converged_np$np" "$(sval "$out" converged)" yes || rc=1
+    assert_eq "${tag}_cutbacks_np$np" "$(sval "$out" cutbacks)" 0 || rc=1
+    assert_eq "${tag}_retries_np$np" "$(sval "$out" contact_retries_step_cap)" 0 || rc=1
+    assert_le "${tag}_newton_np$np" "$(sval "$out" newton_iterations)" "$nmax" || rc=1
+    assert_close "${tag}_force_np$np" "$(sval "$out" contact_force_y)" 0.005 1e-8 || rc=1
+    assert_le "${tag}_gap_error_np$np" "$(sval "$out" contact_gap_error)" "$(sval "$out" contact_gap_tol)" || rc=1
+  done
+  SAME_ATOL=1e-12 same_summary "$CASE_DIR/${tag}1.txt" "$CASE_DIR/${tag}2.txt" 1e-8 contact_force_y contact_peak_pressure || rc=1
+  return $rc
+}
+
 test_units_twopass_alpha10() {
   local rc=0 np out code
-  for np in 1 2; do
-    out=$CASE_DIR/np$np.txt
-    spc "$out" $np -options_file input/hertz2d_twobody.opts -contact_two_pass -contact_alpha 10 -output_dir "$CASE_DIR" -output_name np$np -output_fields false || return 1
-    echo "np $np: newton $(sval "$out" newton_iterations) accel $(sval "$out" contact_shift_accel) steps $(sval "$out" contact_shift_accel_steps) force $(sval "$out" contact_force_y)"
-    assert_eq "converged_np$np" "$(sval "$out" converged)" yes || rc=1
-    assert_eq "accel_default_np$np" "$(sval "$out" contact_shift_accel)" anderson || rc=1
-    assert_eq "cutbacks_np$np" "$(sval "$out" cutbacks)" 0 || rc=1
-    assert_le "newton_np$np" "$(sval "$out" newton_iterations)" 50 || rc=1
-    assert_close "force_np$np" "$(sval "$out" contact_force_y)" 0.005 1e-8 || rc=1
-    assert_le "gap_error_np$np" "$(sval "$out" contact_gap_error)" "$(sval "$out" contact_gap_tol)" || rc=1
-  done
-  SAME_ATOL=1e-12 same_summary "$CASE_DIR/np1.txt" "$CASE_DIR/np2.txt" 1e-8 contact_force_y contact_peak_pressure || rc=1
-  for np in 1 2; do # alm's default budget (-contact_alm_max 50) holds its 40 augmentations
-    out=$CASE_DIR/alm$np.txt
-    spc "$out" $np -options_file input/hertz2d_twobody.opts -contact_two_pass -contact_alpha 10 -contact_method alm -output_dir "$CASE_DIR" -output_name alm$np -output_fields false || return 1
-    echo "alm np $np: newton $(sval "$out" newton_iterations) augmentations $(sval "$out" contact_augmentations) force $(sval "$out" contact_force_y)"
-    assert_eq "alm_cutbacks_np$np" "$(sval "$out" cutbacks)" 0 || rc=1
-    assert_eq "alm_retries_np$np" "$(sval "$out" contact_retries_step_cap)" 0 || rc=1
-    assert_le "alm_newton_np$np" "$(sval "$out" newton_iterations)" 70 || rc=1
-    assert_close "alm_force_np$np" "$(sval "$out" contact_force_y)" 0.005 1e-8 || rc=1
-    assert_le "alm_gap_error_np$np" "$(sval "$out" contact_gap_error)" "$(sval "$out" contact_gap_tol)" || rc=1
-  done
-  SAME_ATOL=1e-12 same_summary "$CASE_DIR/alm1.txt" "$CASE_DIR/alm2.txt" 1e-8 contact_force_y contact_peak_pressure || rc=1
+  twopass_a10 np 50 || rc=1
+  for np in 1 2; do assert_eq "accel_default_np$np" "$(sval "$CASE_DIR/np$np.txt" contact_shift_accel)" anderson || rc=1; done
+  twopass_a10 alm 70 -contact_method alm || rc=1 # alm's default budget (-contact_alm_max 50) holds its 40 augmentations
   out=$CASE_DIR/plain.txt
   spc "$out" 1 -options_file input/hertz2d_twobody.opts -contact_two_pass -contact_alpha 10 -contact_shift_accel none -load_max_cutbacks 1 -output_dir "$CASE_DIR" -output_name plain -output_fields false; code=$?
   grep -E "^(stopping|load step)" "$out"
