@@ -71,6 +71,7 @@ PetscErrorCode SPBCSetFromOptions(MPI_Comm comm, PetscInt dim, PetscInt *nbc, SP
     PetscCall(BCSetFromOptions(comm, i, dim, PETSC_TRUE, &bc[i]));
     (*nbc)++;
   }
+  PetscCall(SPOptionsCheckNoGap(comm, "-bc_", *nbc, SP_MAX_BC, "boundary conditions", "boundary condition", "type"));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -84,13 +84,7 @@ PetscErrorCode SPContactPairsSetFromOptions(SPContact c)
     PetscCall(PairSetFromOptions(comm, c->nuser, c->mu, &c->pair[c->nuser], &found));
     if (!found) break;
   }
-  if (found) { /* pair SP_MAX_PAIRS given? */
-    char      name[64];
-    PetscBool more;
-    PetscCall(PetscSNPrintf(name, sizeof(name), "-contact_pair_%d_slave_values", SP_MAX_PAIRS));
-    PetscCall(PetscOptionsHasName(NULL, NULL, name, &more));
-    PetscCheck(!more, comm, PETSC_ERR_USER_INPUT, "at most %d contact pairs (-contact_pair_0_ .. -contact_pair_%d_)", SP_MAX_PAIRS, SP_MAX_PAIRS - 1);
-  }
+  PetscCall(SPOptionsCheckNoGap(comm, "-contact_pair_", c->nuser, SP_MAX_PAIRS, "contact pairs", "contact pair", "slave_values"));
   c->npair = c->nuser;
   PetscCheck(c->nuser > 0 || !c->twoPass, comm, PETSC_ERR_USER_INPUT, "-contact_two_pass needs a contact pair (-contact_pair_0_slave_values, -contact_pair_0_master_values)");
   if (c->twoPass)

@@ -224,6 +224,7 @@ PetscErrorCode SPContactSetFromOptions(SPContact c)
     c->obMu[c->nob] = c->mu;
     PetscCall(ObstacleSetFromOptions(comm, c->nob, c->dim, &c->ob[c->nob], &c->obMu[c->nob]));
   }
+  PetscCall(SPOptionsCheckNoGap(comm, "-contact_obstacle_", c->nob, SP_MAX_OBSTACLES, "obstacles", "obstacle", "type"));
   PetscCall(SPContactPairsSetFromOptions(c));
   c->enabled = c->nob > 0 || c->npair > 0 ? PETSC_TRUE : PETSC_FALSE;
   PetscCall(CheckFriction(c));

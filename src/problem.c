@@ -1,6 +1,5 @@
 /* Problem: displacement field (PetscFE, degree from -petscspace_degree), material, boundary
    conditions and the load factor that scales every load. */
-#include <ctype.h>
 #include <spcontact-impl.h>
 #include <kernels/elastic.h>
 #include <kernels/neohookean.h>
@@ -45,35 +44,6 @@ PetscErrorCode SPProblemCreate(DM dm, SPProblem *problem)
   PetscCall(PetscStrcpy(p->matLabel, "Cell Sets"));
   PetscCall(DMGetDimension(dm, &p->dim));
   *problem = p;
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-/* Which k have an option -material_<k>_* in the database. PetscOptionsHasName cannot tell: its
-   "_%d_" lookup finds -material_E for -material_0_E. An index beyond the table is an error. */
-static PetscErrorCode RegionsGiven(MPI_Comm comm, PetscBool given[])
-{
-  const char *key = "-material_";
-  const size_t n  = strlen(key);
-  char        *all;
-
-  PetscFunctionBeginUser;
-  for (PetscInt k = 0; k < SP_MAX_MATERIALS; ++k) given[k] = PETSC_FALSE;
-  PetscCall(PetscOptionsGetAll(NULL, &all)); /* "-name value -name ..." */
-  for (size_t i = 0; all[i]; ++i) {
-    size_t d;
-    long   k = 0;
-    if (!SPOptionsNameAt(all, i, key)) continue;
-    for (d = i + n; isdigit((unsigned char)all[d]) && k < 1000000; ++d) k = 10 * k + (all[d] - '0');
-    if (d == i + n || all[d] != '_') continue; /* not -material_<k>_ */
-    if (k >= SP_MAX_MATERIALS) {
-      char name[64];
-      (void)SPOptionsNameCopy(all, i, name, sizeof(name));
-      PetscCall(PetscFree(all));
-      SETERRQ(comm, PETSC_ERR_USER_INPUT, "%s: at most %d region materials (k = 0..%d)", name, SP_MAX_MATERIALS, SP_MAX_MATERIALS - 1);
-    }
-    given[k] = PETSC_TRUE;
-  }
-  PetscCall(PetscFree(all));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -126,7 +96,7 @@ PetscErrorCode SPProblemSetFromOptions(SPProblem p)
   PetscCheck(p->nu > -1.0 && p->nu < 0.5, comm, PETSC_ERR_USER_INPUT, "-material_nu %.6g: Poisson's ratio must satisfy -1 < nu < 0.5", (double)p->nu);
   /* region materials -material_<k>_*, k = 0..7 (gaps allowed) */
   p->nmat = 0;
-  PetscCall(RegionsGiven(comm, given));
+  PetscCall(SPOptionsIndexedGiven(comm, "-material_", SP_MAX_MATERIALS, "region materials", given));
   for (PetscInt k = 0; k < SP_MAX_MATERIALS; ++k) {
     SPMaterial m;
     PetscCall(RegionSetFromOptions(p, k, given[k], &m));

@@ -58,6 +58,14 @@ bc component out of range (2D)|input/hertz2d.opts|-bc_0_components 2
 bc component out of range (3D)|input/hertz3d.opts|-bc_0_components 3
 pressure with 2 values|input/hertz2d.opts|-bc_1_value 0.005,0.1
 traction with 3 values in 2D|input/block2d.opts|-bc_1_type traction -bc_1_value 1,2,3
+bc after a gap (bc_2 missing: bc_3 would be dropped)|input/block2d.opts|-bc_3_type traction -bc_3_values 2 -bc_3_value 0.001,0
+bc options without the type|input/block2d.opts|-bc_2_values 3
+bc index 8|input/block2d.opts|-bc_8_type traction -bc_8_values 2
+obstacle after a gap|input/hertz2d.opts|-contact_obstacle_2_type plane
+obstacle option without the type|input/hertz2d.opts|-contact_obstacle_1_mu 0.2
+pair option without its surfaces|input/hertz2d_twobody.opts|-contact_pair_1_mu 0.2
+pair after a gap|input/hertz2d_twobody.opts|-contact_pair_2_slave_values 3 -contact_pair_2_master_values 4
+pair index 8|input/hertz2d_twobody.opts|-contact_pair_8_slave_values 3
 Dirichlet value nan|input/block2d.opts|-bc_0_value nan
 pressure inf|input/hertz2d.opts|-bc_1_value inf
 load curve reversed|input/hertz2d.opts|-bc_1_ramp 1,0
