@@ -74,8 +74,10 @@ static PetscErrorCode ObstacleSetFromOptions(MPI_Comm comm, PetscInt i, PetscInt
   PetscCall(PetscOptionsRealArray("-point", "Plane point, or sphere/cylinder centre", "SPContactSetFromOptions", ob->point, &n, &set));
   PetscCall(CheckVector(comm, prefix, "point", dim, set, n, ob->point));
   n = 3;
-  PetscCall(PetscOptionsRealArray("-normal", "Plane normal (towards the body) or cylinder axis", "SPContactSetFromOptions", ob->normal, &n, &set));
-  PetscCall(CheckVector(comm, prefix, "normal", dim, set, n, ob->normal));
+  if (type == SP_OBSTACLE_PLANE || (type == SP_OBSTACLE_CYLINDER && dim == 3)) { /* a sphere, and a cylinder in 2D (a circle), have none: a -normal given is then reported unused */
+    PetscCall(PetscOptionsRealArray("-normal", "Plane normal (towards the body) or cylinder axis (3D; a cylinder in 2D is a circle)", "SPContactSetFromOptions", ob->normal, &n, &set));
+    PetscCall(CheckVector(comm, prefix, "normal", dim, set, n, ob->normal));
+  }
   PetscCall(PetscOptionsReal("-radius", "Sphere/cylinder radius > 0", "SPContactSetFromOptions", ob->radius, &ob->radius, NULL));
   n = 3;
   PetscCall(PetscOptionsRealArray("-motion", "Rigid displacement of the obstacle at load factor 1", "SPContactSetFromOptions", ob->motion, &n, &set));

@@ -176,6 +176,13 @@ test_bad_input_unused_option() {
   grep '^spcontact: warning: option -mg_levels_ksp_max_it was not used' "$CASE_DIR/lu_user.txt" || { echo "no report of the user's -mg_levels_ksp_max_it"; rc=1; }
   grep '^spcontact: warning: option -dm_plex_simplex was not used' "$CASE_DIR/lu_user.txt" || { echo "no report of the user's -dm_plex_simplex"; rc=1; }
   assert_eq warnings_user_options "$(grep -c 'warning' "$CASE_DIR/lu_user.txt")" 2 || rc=1
+  # an obstacle's normal where it has none (a sphere; a cylinder in 2D is a circle) is not read:
+  # reported, not silently ignored
+  local kind
+  for kind in sphere cylinder; do
+    spc "$CASE_DIR/$kind.txt" 1 -options_file input/block2d.opts -contact_obstacle_0_type $kind -contact_obstacle_0_point 0.5,-2 -contact_obstacle_0_radius 2 -load_steps 1 -output_dir "$CASE_DIR" -output_name $kind -output_fields false || rc=1
+    grep '^spcontact: warning: option -contact_obstacle_0_normal was not used' "$CASE_DIR/$kind.txt" || { echo "no report of a 2D $kind's normal"; rc=1; }
+  done
   return $rc
 }
 
