@@ -22,7 +22,10 @@
    points open for real under a small tension: 70 and 55 Newton iterations at alpha 10 and 100 ->
    324 and 393; with 3 F1c holds no point. A fixed opening (g + s below a fraction of h) instead of
    the tension: F2 needed 3e-7 h or more, and 1e-6 h let F1c at alpha 1000 take 450 Newton
-   iterations instead of 49. */
+   iterations instead of 49. Off by default with -contact_two_pass (contact.c): on the curved
+   two-pass pairs it held points that open, shifted at alpha 10 and 100 (Neo-Hookean B6 at 10:
+   326 Newton iterations -> 47; the dissimilar Neo-Hookean pair at 10 did not finish in 240 s ->
+   41), while it saves about 2.5 times the iterations there at 1000 (README, "Chatter hold"). */
 PetscBool SPContactChatterHolds(SPContact c)
 {
   return c->chatterFlips > 0 && c->method->timing != SP_UPDATE_NONE ? PETSC_TRUE : PETSC_FALSE;

@@ -172,7 +172,7 @@ PetscErrorCode SPContactSetFromOptions(SPContact c)
 {
   MPI_Comm  comm = PetscObjectComm((PetscObject)c->dm);
   PetscInt  tangent = (PetscInt)c->tangent;
-  PetscBool setValues, setPenalty;
+  PetscBool setValues, setPenalty, twoPass = PETSC_FALSE;
 
   PetscFunctionBeginUser;
   PetscOptionsBegin(comm, NULL, "Contact options", "spcontact");
@@ -188,7 +188,9 @@ PetscErrorCode SPContactSetFromOptions(SPContact c)
   PetscCall(PetscOptionsBool("-contact_safeguard", "Update the shift only of points active in both the previous and the new iterate (method.md 4.1); false only to demonstrate chatter", "SPContactSetFromOptions", c->safeguard, &c->safeguard, NULL));
   PetscCall(PetscOptionsBool("-contact_shift_predict", "Friction, shifted: a load step whose increment is proportional to the last one (every condition's amplitude moves in proportion), after a step that changed no point's status, starts the stuck points from the tangential tractions extrapolated from the last two converged steps", "SPContactSetFromOptions", c->predict, &c->predict, NULL));
   PetscCall(PetscOptionsBool("-contact_branch_hold", "Shifted and alm: the Newton step after a shift update (alm: the first of the solve after an augmentation) linearises every point on its branch of the iterate before the update (closed: p = -eps (g + s) even where the new shift opens it; stuck or slipping as it was), not on the one the update gives at the unchanged displacement; not with -contact_shift_accel anderson", "SPContactSetFromOptions", c->branchHold, &c->branchHold, NULL));
-  PetscCall(PetscOptionsInt("-contact_chatter_flips", "Shifted and alm: a point that changed between open and closed this many times in a Newton solve stays closed while its tension eps (g + s) is below -contact_chatter_tension times the iterate's peak pressure (0: off)", "SPContactSetFromOptions", c->chatterFlips, &c->chatterFlips, NULL));
+  PetscCall(PetscOptionsGetBool(NULL, NULL, "-contact_two_pass", &twoPass, NULL));
+  if (twoPass) c->chatterFlips = 0; /* the hold's default with two-pass pairs: off (contact-enforce.c) */
+  PetscCall(PetscOptionsInt("-contact_chatter_flips", "Shifted and alm: a point that changed between open and closed this many times in a Newton solve stays closed while its tension eps (g + s) is below -contact_chatter_tension times the iterate's peak pressure (0: off; default 3, 0 with -contact_two_pass)", "SPContactSetFromOptions", c->chatterFlips, &c->chatterFlips, NULL));
   PetscCall(PetscOptionsReal("-contact_chatter_tension", "The tension, relative to the iterate's peak contact pressure, below which a chattering point stays closed (-contact_chatter_flips)", "SPContactSetFromOptions", c->chatterTension, &c->chatterTension, NULL));
   PetscCall(PetscOptionsBool("-contact_shift_settled", "In-Newton shift update only at iterations whose active set did not change (the contraction rate holds only then)", "SPContactSetFromOptions", c->settled, &c->settled, NULL));
   PetscCall(PetscOptionsEList("-contact_tangent", "Second variation of the gap in the tangent (obstacle curvature; pair projection and normal variation): auto (once a Newton iteration left the active set unchanged), full (always: the consistent tangent), frozen (never)", "SPContactSetFromOptions", Tangents, 3, Tangents[tangent], &tangent, NULL));
