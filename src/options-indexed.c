@@ -47,14 +47,12 @@ PetscErrorCode SPOptionsCheckNoGap(MPI_Comm comm, const char key[], PetscInt n, 
   PetscCheck(max <= (PetscInt)PETSC_STATIC_ARRAY_LENGTH(given), comm, PETSC_ERR_PLIB, "%s: family too large", key);
   PetscCall(SPOptionsIndexedGiven(comm, key, max, what, given));
   for (PetscInt k = n; k < max; ++k) {
-    char *all, name[64] = "";
+    char *all, head[64], name[64] = "";
     if (!given[k]) continue;
+    PetscCall(PetscSNPrintf(head, sizeof(head), "%s%" PetscInt_FMT "_", key, k));
     PetscCall(PetscOptionsGetAll(NULL, &all));
-    for (size_t i = 0; all[i] && !name[0]; ++i) {
-      char  head[64];
-      PetscCall(PetscSNPrintf(head, sizeof(head), "%s%" PetscInt_FMT "_", key, k));
+    for (size_t i = 0; all[i] && !name[0]; ++i)
       if (SPOptionsNameAt(all, i, head)) (void)SPOptionsNameCopy(all, i, name, sizeof(name));
-    }
     PetscCall(PetscFree(all));
     SETERRQ(comm, PETSC_ERR_USER_INPUT, "%s: %s %" PetscInt_FMT " is not read because %s%" PetscInt_FMT "_%s is missing (%s are numbered 0, 1, 2, ... without gaps, each with its %s<i>_%s)", name, one, k, key, n, defining, what, key, defining);
   }
