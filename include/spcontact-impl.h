@@ -465,8 +465,8 @@ struct _n_SPOutput {
   PetscBool   enabled;
   PetscViewer h5;
   FILE       *csv;
-  PetscInt    nsteps;
-  PetscReal   times[1024];
+  PetscInt    nsteps, maxSteps;
+  PetscReal  *times; /* the load factor of each written step (maxSteps allocated) */
   PetscBool   contactFields;
   PetscBool   frictionFields; /* tangential_traction, slip, status (runs with friction) */
   PetscBool   pointsFile;     /* the contact-points CSV was written (renamed with the others) */
@@ -481,6 +481,9 @@ struct _n_SPOutput {
 PETSC_EXTERN PetscErrorCode SPOutputWriteBegin(SPOutput, const char[], PetscBool);
 PETSC_EXTERN PetscErrorCode SPOutputWriteEnd(SPOutput, PetscErrorCode);
 PETSC_EXTERN PetscErrorCode SPOutputCheckStream(FILE *, const char[], PetscBool);
+PETSC_EXTERN PetscErrorCode SPOutputCheckFiles(SPOutput);
+PETSC_EXTERN PetscErrorCode SPOutputH5Reference(SPOutput, PetscBool, char[], size_t);
+PETSC_EXTERN PetscErrorCode SPOutputRemoveStale(SPOutput, const char *const[], PetscInt);
 
 /* signals.c: SIGTERM/SIGINT recorded by a handler, acted on at the load-step loop's safe point */
 typedef struct {

@@ -73,15 +73,48 @@ static void Field(FILE *fp, const char h5[], const char name[], PetscInt nc, Pet
     fprintf(fp, "        <Attribute Name=\"%s\" AttributeType=\"Vector\" Center=\"Node\">\n          <DataItem DataType=\"Float\" Precision=\"8\" Dimensions=\"%d %d\" Format=\"HDF\">%s:/vertex_fields/%s_Field_0|%d 0 0:1 1 1:1 %d %d:%d %d %d</DataItem>\n        </Attribute>\n", name, (int)nv, (int)nc, h5, name, (int)step, (int)nv, (int)nc, (int)nsteps, (int)nv, (int)nc);
 }
 
-PetscErrorCode SPOutputWriteSurfaceXdmf(SPOutput o, SPContact c, PetscBool complete, PetscBool *written)
+/* Rank 0: the surface XDMF of nf facets (connectivity conn) over the run's steps */
+static PetscErrorCode WriteFile(SPOutput o, const char xmf[], const char h5[], PetscInt dim, PetscInt nv, PetscInt nf, PetscInt corners, const PetscInt conn[])
 {
   static const char *const cfields[] = {"contact_pressure", "gap", "shift", "active"};
   static const char *const ffields[] = {"tangential_traction", "slip", "status"};
-  PetscInt    nf = 0, corners = 0, dim, nv, *conn = NULL;
-  Vec         one;
-  PetscMPIInt rank;
-  char        h5[PETSC_MAX_PATH_LEN + 8], xmf[PETSC_MAX_PATH_LEN + 16];
-  FILE       *fp;
+  FILE *fp;
+
+  PetscFunctionBeginUser;
+  fp = fopen(xmf, "w");
+  PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write %s", xmf);
+  fprintf(fp, "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n  <Domain>\n");
+  fprintf(fp, "    <Grid Name=\"contact_surface\" GridType=\"Collection\" CollectionType=\"Temporal\">\n");
+  for (PetscInt k = 0; k < o->nsteps; ++k) {
+    fprintf(fp, "      <Grid Name=\"surface_step_%d\" GridType=\"Uniform\">\n        <Time Value=\"%.10g\"/>\n", (int)k, (double)o->times[k]);
+    if (dim == 2) fprintf(fp, "        <Topology TopologyType=\"Polyline\" NodesPerElement=\"2\" NumberOfElements=\"%d\">\n", (int)nf);
+    else fprintf(fp, "        <Topology TopologyType=\"%s\" NumberOfElements=\"%d\">\n", corners == 3 ? "Triangle" : "Quadrilateral", (int)nf);
+    fprintf(fp, "          <DataItem Format=\"XML\" DataType=\"Int\" Dimensions=\"%d %d\">\n", (int)nf, (int)corners);
+    for (PetscInt f = 0; f < nf; ++f) {
+      for (PetscInt j = 0; j < corners; ++j) fprintf(fp, "%s%d", j ? " " : "            ", (int)conn[f * corners + j]);
+      fprintf(fp, "\n");
+    }
+    fprintf(fp, "          </DataItem>\n        </Topology>\n");
+    fprintf(fp, "        <Geometry GeometryType=\"%s\">\n          <DataItem Format=\"HDF\" DataType=\"Float\" Precision=\"8\" Dimensions=\"%d %d\">%s:/geometry/vertices</DataItem>\n        </Geometry>\n", dim == 2 ? "XY" : "XYZ", (int)nv, (int)dim, h5);
+    for (PetscInt f = 0; f < 4; ++f) Field(fp, h5, cfields[f], 1, k, o->nsteps, nv);
+    if (o->frictionFields)
+      for (PetscInt f = 0; f < 3; ++f) Field(fp, h5, ffields[f], f < 2 ? dim : 1, k, o->nsteps, nv);
+    fprintf(fp, "      </Grid>\n");
+  }
+  fprintf(fp, "    </Grid>\n  </Domain>\n</Xdmf>\n");
+  PetscCall(SPOutputCheckStream(fp, xmf, PETSC_TRUE));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Collective. A failed write on rank 0 is returned there (for SPOutputWriteEnd) after the
+   broadcast the other ranks wait in. */
+PetscErrorCode SPOutputWriteSurfaceXdmf(SPOutput o, SPContact c, PetscBool complete, PetscBool *written)
+{
+  PetscInt       nf = 0, corners = 0, dim, nv, *conn = NULL;
+  Vec            one;
+  PetscMPIInt    rank;
+  PetscErrorCode ierr = PETSC_SUCCESS;
+  char           h5[PETSC_MAX_PATH_LEN + 8], xmf[PETSC_MAX_PATH_LEN + 16];
 
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(PetscObjectComm((PetscObject)o->dm), &rank));
@@ -97,32 +130,11 @@ PetscErrorCode SPOutputWriteSurfaceXdmf(SPOutput o, SPContact c, PetscBool compl
   PetscCall(DMRestoreGlobalVector(o->dmS, &one));
   PetscCall(GatherFacets(c, o->dm, &nf, &corners, &conn));
   if (!rank && nf > 0) {
-    PetscCall(PetscSNPrintf(h5, sizeof(h5), "%s.h5%s", o->name, complete ? "" : ".part"));
-    fp = fopen(xmf, "w");
-    PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write %s", xmf);
-    fprintf(fp, "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n  <Domain>\n");
-    fprintf(fp, "    <Grid Name=\"contact_surface\" GridType=\"Collection\" CollectionType=\"Temporal\">\n");
-    for (PetscInt k = 0; k < o->nsteps; ++k) {
-      fprintf(fp, "      <Grid Name=\"surface_step_%d\" GridType=\"Uniform\">\n        <Time Value=\"%.10g\"/>\n", (int)k, (double)o->times[k]);
-      if (dim == 2) fprintf(fp, "        <Topology TopologyType=\"Polyline\" NodesPerElement=\"2\" NumberOfElements=\"%d\">\n", (int)nf);
-      else fprintf(fp, "        <Topology TopologyType=\"%s\" NumberOfElements=\"%d\">\n", corners == 3 ? "Triangle" : "Quadrilateral", (int)nf);
-      fprintf(fp, "          <DataItem Format=\"XML\" DataType=\"Int\" Dimensions=\"%d %d\">\n", (int)nf, (int)corners);
-      for (PetscInt f = 0; f < nf; ++f) {
-        for (PetscInt j = 0; j < corners; ++j) fprintf(fp, "%s%d", j ? " " : "            ", (int)conn[f * corners + j]);
-        fprintf(fp, "\n");
-      }
-      fprintf(fp, "          </DataItem>\n        </Topology>\n");
-      fprintf(fp, "        <Geometry GeometryType=\"%s\">\n          <DataItem Format=\"HDF\" DataType=\"Float\" Precision=\"8\" Dimensions=\"%d %d\">%s:/geometry/vertices</DataItem>\n        </Geometry>\n", dim == 2 ? "XY" : "XYZ", (int)nv, (int)dim, h5);
-      for (PetscInt f = 0; f < 4; ++f) Field(fp, h5, cfields[f], 1, k, o->nsteps, nv);
-      if (o->frictionFields)
-        for (PetscInt f = 0; f < 3; ++f) Field(fp, h5, ffields[f], f < 2 ? dim : 1, k, o->nsteps, nv);
-      fprintf(fp, "      </Grid>\n");
-    }
-    fprintf(fp, "    </Grid>\n  </Domain>\n</Xdmf>\n");
-    PetscCall(SPOutputCheckStream(fp, xmf, PETSC_TRUE));
+    PetscCall(SPOutputH5Reference(o, complete, h5, sizeof(h5)));
+    ierr = WriteFile(o, xmf, h5, dim, nv, nf, corners, conn);
   }
-  *written = nf > 0 ? PETSC_TRUE : PETSC_FALSE;
+  *written = nf > 0 && !ierr ? PETSC_TRUE : PETSC_FALSE;
   PetscCallMPI(MPI_Bcast(written, 1, MPIU_BOOL, 0, PetscObjectComm((PetscObject)o->dm)));
   PetscCall(PetscFree(conn));
-  PetscFunctionReturn(PETSC_SUCCESS);
+  PetscFunctionReturn(ierr);
 }

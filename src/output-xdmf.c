@@ -113,7 +113,7 @@ PetscErrorCode SPOutputWriteXdmf(SPOutput o, PetscBool complete)
   PetscCall(DMGetDimension(o->dm, &dim));
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   if (rank) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCall(PetscSNPrintf(h5, sizeof(h5), "%s.h5%s", o->name, complete ? "" : ".part")); /* relative: the .xmf sits beside it */
+  PetscCall(SPOutputH5Reference(o, complete, h5, sizeof(h5)));
   for (PetscInt legacy = 0; legacy < 2; ++legacy) {
     PetscCall(PetscSNPrintf(xmf, sizeof(xmf), legacy ? "%s-xdmf2.xmf.part" : "%s.xmf.part", o->prefix));
     PetscCall(PetscStrncpy(o->guard.file, xmf, sizeof(o->guard.file))); /* the file a failure names */

@@ -32,7 +32,7 @@ PetscErrorCode SPOutputSetFromOptions(SPOutput o)
   PetscFunctionBeginUser;
   PetscOptionsBegin(PetscObjectComm((PetscObject)o->dm), NULL, "Output options", "spcontact");
   PetscCall(PetscOptionsString("-output_dir", "Directory for the .h5, .xmf and .csv files (created if missing)", "SPOutputSetFromOptions", o->dir, o->dir, sizeof(o->dir), NULL));
-  PetscCall(PetscOptionsString("-output_name", "Base name of the output files", "SPOutputSetFromOptions", o->name, o->name, sizeof(o->name), NULL));
+  PetscCall(PetscOptionsString("-output_name", "Base name of the output files (sub/name: in the subdirectory sub of -output_dir, created if missing)", "SPOutputSetFromOptions", o->name, o->name, sizeof(o->name), NULL));
   PetscCall(PetscOptionsBool("-output_fields", "Write the HDF5/XDMF fields (the CSV history is always written)", "SPOutputSetFromOptions", o->enabled, &o->enabled, NULL));
   PetscOptionsEnd();
   PetscCall(PetscSNPrintf(o->prefix, sizeof(o->prefix), "%s/%s", o->dir, o->name));
@@ -60,32 +60,6 @@ static PetscErrorCode VertexDM(DM dm, PetscInt nc, DM *dmV)
   PetscCall(PetscSectionSetUp(s));
   PetscCall(DMSetLocalSection(*dmV, s));
   PetscCall(PetscSectionDestroy(&s));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-/* Rank 0 creates the directory if missing and probes it with a file: its errno if it cannot */
-static PetscErrorCode CheckDirectory(SPOutput o)
-{
-  MPI_Comm    comm = PetscObjectComm((PetscObject)o->dm);
-  PetscMPIInt rank;
-  int         err = 0;
-
-  PetscFunctionBeginUser;
-  PetscCallMPI(MPI_Comm_rank(comm, &rank));
-  if (rank == 0) {
-    char  probe[PETSC_MAX_PATH_LEN + 32];
-    FILE *fp;
-    PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
-    (void)PetscMkdir(o->dir); /* failure shows up as the probe below */
-    PetscCall(PetscPopErrorHandler());
-    PetscCall(PetscSNPrintf(probe, sizeof(probe), "%s.probe", o->prefix));
-    errno = 0;
-    fp    = fopen(probe, "w");
-    if (!fp) err = errno ? errno : EACCES;
-    else fclose(fp), remove(probe);
-  }
-  PetscCallMPI(MPI_Bcast(&err, 1, MPI_INT, 0, comm));
-  PetscCheck(!err, comm, PETSC_ERR_USER_INPUT, "-output_dir %s: cannot create or write the output directory (%s); choose a writable one", o->dir, strerror(err));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -117,7 +91,7 @@ PetscErrorCode SPOutputOpen(SPOutput o)
   PetscInt dim;
 
   PetscFunctionBeginUser;
-  PetscCall(CheckDirectory(o));
+  PetscCall(SPOutputCheckFiles(o));
   PetscCall(PetscSNPrintf(file, sizeof(file), "%s.csv.part", o->prefix));
   PetscCall(SPOutputWriteBegin(o, file, PETSC_FALSE));
   PetscCall(SPOutputWriteEnd(o, OpenHistory(o, file)));
@@ -179,6 +153,10 @@ static PetscErrorCode WriteFields(SPOutput o, SPProblem problem, Vec u, SPContac
   PetscFunctionBeginUser;
   PetscCall(SPProblemGetLoadFactor(problem, &load));
   PetscCall(PetscViewerHDF5SetTimestep(o->h5, o->nsteps));
+  if (o->nsteps == o->maxSteps) { /* the load factors of the steps, for the XDMF: grown by doubling */
+    o->maxSteps = o->maxSteps ? 2 * o->maxSteps : 64;
+    PetscCall(PetscRealloc(o->maxSteps * sizeof(PetscReal), &o->times));
+  }
   o->times[o->nsteps++] = load;
   PetscCall(DMGetGlobalVector(o->dmV, &uV));
   PetscCall(PetscObjectSetName((PetscObject)uV, "displacement"));
@@ -235,7 +213,6 @@ PetscErrorCode SPOutputWriteStep(SPOutput o, SPProblem problem, Vec u, SPContact
   PetscCall(SPOutputWriteBegin(o, file, PETSC_FALSE));
   PetscCall(SPOutputWriteEnd(o, FlushHistory(o, PETSC_FALSE)));
   if (!o->enabled) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCheck(o->nsteps < (PetscInt)(sizeof(o->times) / sizeof(o->times[0])), PETSC_COMM_SELF, PETSC_ERR_SUP, "too many output steps");
   PetscCall(PetscSNPrintf(file, sizeof(file), "%s.h5.part", o->prefix));
   PetscCall(SPOutputWriteBegin(o, file, PETSC_TRUE));
   PetscCall(SPOutputWriteEnd(o, WriteFields(o, problem, u, contact)));
@@ -258,6 +235,7 @@ PetscErrorCode SPOutputDestroy(SPOutput *out)
   PetscCall(PetscViewerDestroy(&o->h5));
   PetscCall(DMDestroy(&o->dmV));
   PetscCall(DMDestroy(&o->dmS));
+  PetscCall(PetscFree(o->times));
   PetscCall(PetscFree(*out));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -353,6 +331,7 @@ PetscErrorCode SPOutputClose(SPOutput o, SPContact contact, const char status[],
   if (surface) files[n++] = "-surface.xmf";
   if (o->enabled) files[n++] = ".h5";
   if (rank == 0) PetscCall(RenameAll(o, files, n, &failed, &err));
+  if (rank == 0 && !failed) PetscCall(SPOutputRemoveStale(o, files, n));
   PetscCallMPI(MPI_Bcast(&failed, 1, MPIU_INT, 0, comm));
   PetscCallMPI(MPI_Bcast(&err, 1, MPI_INT, 0, comm));
   PetscCheck(!failed, comm, PETSC_ERR_USER_INPUT, "cannot rename %s%s.part to %s%s (%s); the complete results stay under their .part names", o->prefix, files[failed - 1], o->prefix, files[failed - 1], strerror(err));

@@ -9,13 +9,13 @@
 test_bad_input_catalogue() {
   printf '$MeshFormat\n3.0 0 8\n$EndMeshFormat\n' > "$CASE_DIR/v3.msh"
   printf '$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Nodes\n' > "$CASE_DIR/truncated.msh"
-  mkdir -p "$CASE_DIR/taken.h5"
+  mkdir -p "$CASE_DIR/taken.h5" "$CASE_DIR/busy.h5.part" "$CASE_DIR/busy2-surface.xmf.part"
   touch "$CASE_DIR/afile"
   printf -- '-load_steps 1 # an options file naming a missing one\n-options_file /nonexistent/inner.opts\n' > "$CASE_DIR/outer.opts"
   printf -- '-options_file %s/outer.opts\n' "$CASE_DIR" > "$CASE_DIR/middle.opts"
   printf -- '-options_file %s/self.opts\n' "$CASE_DIR" > "$CASE_DIR/self.opts"
   printf -- '-load_steps 1\n-options_file\n' > "$CASE_DIR/dangling.opts"
-  sed -e "s|@DIR@|$CASE_DIR|g" <<'CASES' | bad_input_cases
+  sed -e "s|@DIR@|$CASE_DIR|g" -e "s|@LONG@|$(printf 'x%.0s' {1..300})|" <<'CASES' | bad_input_cases
 contact label on cells|input/hertz2d.opts|-contact_label "Cell Sets" -contact_values 1
 contact value without points|input/hertz2d.opts|-contact_values 99
 bc value without points|input/hertz2d.opts|-bc_1_values 77
@@ -76,6 +76,13 @@ output directory is a file|input/hertz2d.opts|-output_dir /etc/hostname
 output directory not writable|input/hertz2d.opts|-output_dir /proc/spcontact
 output name taken by a directory|input/block2d.opts|-output_dir @DIR@ -output_name taken
 output directory under a regular file|input/hertz2d.opts|-output_dir @DIR@/afile/sub
+output name with & (XDMF markup)|input/hertz2d.opts|-output_name a&b
+output name with a colon (the XDMF file:dataset separator)|input/hertz2d.opts|-output_name a:b
+output name ending in /|input/hertz2d.opts|-output_name sub/
+output name in a missing directory two levels deep|input/hertz2d.opts|-output_name no/such/x
+output name too long|input/hertz2d.opts|-output_name @LONG@
+output h5.part taken by a directory|input/hertz2d.opts|-output_name busy
+output surface xmf.part taken by a directory|input/hertz2d.opts|-output_name busy2
 gap rtol negative|input/hertz2d.opts|-contact_gap_rtol -1
 gap tol zero|input/hertz2d.opts|-contact_gap_tol 0
 cut-back budget negative|input/hertz2d.opts|-load_max_cutbacks -1
@@ -135,6 +142,7 @@ CASES
 test_bad_input_catalogue_np2() {
   local rc=0 i=0 why args code
   printf -- '-options_file /nonexistent/inner.opts\n' > "$CASE_DIR/outer.opts"
+  mkdir -p "$CASE_DIR/busy.h5.part" "$CASE_DIR/busy2-surface.xmf.part"
   while IFS='|' read -r why args; do
     i=$((i + 1))
     # shellcheck disable=SC2086
@@ -151,6 +159,8 @@ option without its value|-load_steps -quiet
 options file missing|-options_file /nonexistent.opts
 options file naming a missing options file|-options_file $CASE_DIR/outer.opts
 mesh file not a mesh|-mesh_file input/hertz2d.opts
+h5.part taken by a directory (was: two lines and an MPI_Abort banner)|-output_name busy
+surface xmf.part taken by a directory (was: a hang)|-output_name busy2
 CASES
   [ -z "$(ls "$CASE_DIR" | grep -E '\.(h5|xmf|csv)$')" ] || { echo "final-named output written"; rc=1; }
   return $rc

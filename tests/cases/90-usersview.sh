@@ -150,3 +150,27 @@ PY
     contact_force_y contact_peak_pressure contact_radius contact_max_penetration || rc=1
   return $rc
 }
+
+# Output names: -output_name sub/x writes into <dir>/sub (created), and its XDMF files name the h5
+# as x.h5 (beside them: before, sub/x.h5, which ParaView looked for in sub/sub); check_xdmf.py
+# reads every one. A complete rerun with the same name removes what the earlier run wrote and
+# this one did not (a contact run's -surface.xmf and _contact.csv after an elastic run: the stale
+# surface XDMF pointed into an h5 without contact fields). More than 1024 load steps (B1-elastic
+# in 1030): every step in the XDMF (before: a PETSc error at step 1025).
+test_output_names() {
+  local rc=0 d=$CASE_DIR/out f
+  spc "$CASE_DIR/sub.txt" 2 -options_file input/hertz2d.opts -output_dir "$d" -output_name sub/x -quiet || return 1
+  assert_eq "files in sub" "$(cd "$d/sub" && ls | tr '\n' ' ')" "x-surface.xmf x-xdmf2.xmf x.csv x.h5 x.xmf x_contact.csv " || rc=1
+  assert_eq "h5 named by the xmf files" "$(grep -ho '[^>]*\.h5[.a-z]*:' "$d"/sub/*.xmf | sort -u | tr '\n' ' ')" "x.h5: " || rc=1
+  for f in x x-xdmf2; do
+    "$PYTHON" scripts/check_xdmf.py "$d/sub/$f.xmf" >"$CASE_DIR/$f.check.txt" 2>&1
+    assert_eq "check_xdmf.py sub/$f.xmf" "$?" 0 || { grep -v '^ok' "$CASE_DIR/$f.check.txt"; rc=1; }
+  done
+  spc "$CASE_DIR/again.txt" 1 -options_file input/elastic2d.opts -output_dir "$d" -output_name sub/x -quiet || return 1
+  assert_eq "files after the elastic rerun" "$(cd "$d/sub" && ls | tr '\n' ' ')" "x-xdmf2.xmf x.csv x.h5 x.xmf " || rc=1
+  spc "$CASE_DIR/many.txt" 1 -options_file input/elastic2d.opts -load_steps 1030 -output_dir "$d" -output_name many -quiet || return 1
+  assert_eq "status, 1030 steps" "$(sval "$CASE_DIR/many.txt" status) $(sval "$CASE_DIR/many.txt" load_steps)" "complete 1030" || rc=1
+  assert_eq "steps in the xmf" "$(grep -c '<Grid Name="step_' "$d/many.xmf")" 1030 || rc=1
+  assert_eq "last step's time" "$(grep -o '<Time Value="[^"]*"' "$d/many.xmf" | tail -1)" '<Time Value="1"' || rc=1
+  return $rc
+}
