@@ -15,7 +15,7 @@ CC       = mpicc
 CFLAGS  ?= -O2 -g
 CFLAGS  += -std=c99 -Wall -Wextra -Wno-unused-parameter -MMD -MP
 CPPFLAGS = -Iinclude $(PETSC_CFLAGS) $(HDF5_CFLAGS)
-LDLIBS   = $(PETSC_LIBS) $(HDF5_LIBS) -lmetis -lm
+LDLIBS   = $(PETSC_LIBS) $(HDF5_LIBS) -lmetis -lyaml -lm
 
 SRC  := $(wildcard src/*.c src/materials/*.c src/methods/*.c)
 OBJ  := $(SRC:%.c=build/%.o)

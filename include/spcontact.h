@@ -172,6 +172,7 @@ PETSC_EXTERN PetscErrorCode SPOutputDestroy(SPOutput *);
 
 /* options-files.c: before PetscInitialize; nonzero (one line printed) if one is unreadable */
 int SPCheckOptionsFiles(int, char **);
+int SPCheckYAMLStream(FILE *, char[], size_t); /* options-yaml.c: 0 if PETSc can read it as options */
 
 /* option-defaults.c: spcontact's defaults for PETSc options, set where the user gave none */
 PETSC_EXTERN PetscErrorCode SPOptionsSetDefault(const char[], const char[]);

@@ -5,7 +5,7 @@ set -euo pipefail
 # libopenblas0-serial: Debian's optimized BLAS/LAPACK (it takes over libblas.so.3 from the reference
 # BLAS); MUMPS factors 2D Jacobians 2-3x faster with it (src/solver-direct.c). Serial: no BLAS
 # threads competing with the MPI ranks.
-PKGS=(make gcc pkg-config petsc-dev libmetis-dev libhdf5-openmpi-dev openmpi-bin gmsh libopenblas0-serial
+PKGS=(make gcc pkg-config petsc-dev libmetis-dev libyaml-dev libhdf5-openmpi-dev openmpi-bin gmsh libopenblas0-serial
       python3-h5py python3-numpy python3-matplotlib paraview python3-paraview xvfb xauth python3-meshio)
 missing=()
 for p in "${PKGS[@]}"; do

@@ -2,7 +2,8 @@
    wall): every -options_file (or -options_file_yaml) on the command line, in PETSC_OPTIONS and,
    recursively, inside options files names a readable file. An options file is read as PETSc reads
    it: '#', '!' and '%' start a comment, the rest is a stream of whitespace-separated tokens.
-   Nesting deeper than MAX_DEPTH (a file that names itself, directly or not) is an error too. */
+   Nesting deeper than MAX_DEPTH (a file that names itself, directly or not) is an error too. A
+   YAML file must be one PETSc can read (options-yaml.c). */
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -90,7 +91,12 @@ static int CheckFile(const char *opt, const char *file, const Where *w)
   }
   inner.from  = file;
   inner.depth = w->depth + 1;
-  bad         = strcmp(opt, "-options_file") ? 0 : CheckContents(fp, &inner); /* YAML: only its presence */
+  if (!strcmp(opt, "-options_file")) bad = CheckContents(fp, &inner);
+  else {
+    char why[512];
+    bad = SPCheckYAMLStream(fp, why, sizeof(why));
+    if (bad) Fail(w, opt, file, why);
+  }
   fclose(fp);
   return bad;
 }

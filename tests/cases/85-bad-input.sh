@@ -15,6 +15,11 @@ test_bad_input_catalogue() {
   printf -- '-options_file %s/outer.opts\n' "$CASE_DIR" > "$CASE_DIR/middle.opts"
   printf -- '-options_file %s/self.opts\n' "$CASE_DIR" > "$CASE_DIR/self.opts"
   printf -- '-load_steps 1\n-options_file\n' > "$CASE_DIR/dangling.opts"
+  printf 'contact:\n  method: [alm\n' > "$CASE_DIR/unclosed.yaml"
+  printf -- '- load_steps\n- 2\n' > "$CASE_DIR/list.yaml"
+  printf 'options_file: input/hertz2d.opts\n' > "$CASE_DIR/named.yaml"
+  printf 'load_steps: 2\n$$more: !include /nonexistent/more.yaml\n' > "$CASE_DIR/include.yaml"
+  printf '$$me: !include %s/self.yaml\n' "$CASE_DIR" > "$CASE_DIR/self.yaml"
   sed -e "s|@DIR@|$CASE_DIR|g" -e "s|@LONG@|$(printf 'x%.0s' {1..300})|" <<'CASES' | bad_input_cases
 contact label on cells|input/hertz2d.opts|-contact_label "Cell Sets" -contact_values 1
 contact value without points|input/hertz2d.opts|-contact_values 99
@@ -53,6 +58,11 @@ options file naming a missing options file|input/hertz2d.opts|-options_file @DIR
 the same two files deep|input/hertz2d.opts|-options_file @DIR@/middle.opts
 options file naming itself (a cycle)|input/hertz2d.opts|-options_file @DIR@/self.opts
 options file ending in -options_file|input/hertz2d.opts|-options_file @DIR@/dangling.opts
+YAML options file that does not parse|input/hertz2d.opts|-options_file_yaml @DIR@/unclosed.yaml
+YAML options file that is a list|input/hertz2d.opts|-options_file_yaml @DIR@/list.yaml
+YAML options file naming an options file (PETSc ignores it)|input/hertz2d.opts|-options_file_yaml @DIR@/named.yaml
+YAML options file including a missing file|input/hertz2d.opts|-options_file_yaml @DIR@/include.yaml
+YAML options file including itself|input/hertz2d.opts|-options_file_yaml @DIR@/self.yaml
 bc type unknown|input/hertz2d.opts|-bc_1_type force_field
 bc component out of range (2D)|input/hertz2d.opts|-bc_0_components 2
 bc component out of range (3D)|input/hertz3d.opts|-bc_0_components 3
@@ -143,6 +153,7 @@ test_bad_input_catalogue_np2() {
   local rc=0 i=0 why args code
   printf -- '-options_file /nonexistent/inner.opts\n' > "$CASE_DIR/outer.opts"
   mkdir -p "$CASE_DIR/busy.h5.part" "$CASE_DIR/busy2-surface.xmf.part"
+  printf 'contact:\n  method: [alm\n' > "$CASE_DIR/unclosed.yaml"
   while IFS='|' read -r why args; do
     i=$((i + 1))
     # shellcheck disable=SC2086
@@ -161,6 +172,7 @@ options file naming a missing options file|-options_file $CASE_DIR/outer.opts
 mesh file not a mesh|-mesh_file input/hertz2d.opts
 h5.part taken by a directory (was: two lines and an MPI_Abort banner)|-output_name busy
 surface xmf.part taken by a directory (was: a hang)|-output_name busy2
+YAML options file that does not parse|-options_file_yaml $CASE_DIR/unclosed.yaml
 CASES
   [ -z "$(ls "$CASE_DIR" | grep -E '\.(h5|xmf|csv)$')" ] || { echo "final-named output written"; rc=1; }
   return $rc

@@ -174,3 +174,21 @@ test_output_names() {
   assert_eq "last step's time" "$(grep -o '<Time Value="[^"]*"' "$d/many.xmf" | tail -1)" '<Time Value="1"' || rc=1
   return $rc
 }
+
+# Options from YAML (-options_file_yaml, PETSc's reader; checked before PetscInitialize by
+# src/options-yaml.c): input/block2d-sweep.yaml (nested keys joined with "_") and a file that
+# includes it ('$$base: !include ...') give the figures of the same options on the command line;
+# a list value is joined with commas (-dm_plex_box_faces 6,10)
+test_options_yaml() {
+  local rc=0
+  printf '$$base: !include input/block2d-sweep.yaml\ndm_plex:\n  box_faces: [6, 10]\n' > "$CASE_DIR/inc.yaml"
+  spc "$CASE_DIR/yaml.txt" 1 -options_file input/block2d.opts -options_file_yaml input/block2d-sweep.yaml -output_dir "$CASE_DIR" -output_name yaml || return 1
+  spc "$CASE_DIR/cmd.txt" 1 -options_file input/block2d.opts -contact_method alm -contact_alpha 100 -quiet -output_dir "$CASE_DIR" -output_name cmd || return 1
+  same_summary "$CASE_DIR/cmd.txt" "$CASE_DIR/yaml.txt" 0 contact_method contact_alpha newton_iterations contact_augmentations displacement_max || rc=1
+  assert_eq "quiet from YAML: no step line" "$(grep -c '^step ' "$CASE_DIR/yaml.txt")" 0 || rc=1
+  spc "$CASE_DIR/inc.txt" 1 -options_file input/block2d.opts -options_file_yaml "$CASE_DIR/inc.yaml" -output_dir "$CASE_DIR" -output_name inc || return 1
+  spc "$CASE_DIR/cmd2.txt" 1 -options_file input/block2d.opts -contact_method alm -contact_alpha 100 -dm_plex_box_faces 6,10 -quiet -output_dir "$CASE_DIR" -output_name cmd2 || return 1
+  same_summary "$CASE_DIR/cmd2.txt" "$CASE_DIR/inc.txt" 0 contact_method newton_iterations displacement_max dofs cells || rc=1
+  assert_eq "cells of the 6 x 10 box" "$(sval "$CASE_DIR/inc.txt" cells)" 60 || rc=1
+  return $rc
+}

@@ -1,0 +1,143 @@
+/* A YAML options file (-options_file_yaml), checked before PetscInitialize as PETSc 3.18 reads it
+   (src/sys/objects/optionsyaml.c), so that a file it would refuse with an error wall is reported
+   in one line: the YAML parses (libyaml), and every document is empty or a mapping of scalar keys
+   to scalars, sequences (of scalars or one-pair mappings) or mappings (prefixes); "<<" merges a
+   mapping or a sequence of mappings; a key "$$..." is skipped, but with the tag !include its
+   value names a YAML file read in place (checked the same way). */
+#include <stdio.h>
+#include <string.h>
+#include <yaml.h>
+
+#define MAX_DEPTH 16 /* !include inside included files */
+
+typedef struct {
+  yaml_document_t *doc;
+  char            *why; /* the reason of a failure */
+  size_t           len;
+  int              depth; /* of !include */
+} Ctx;
+
+static int Layer(Ctx *c, yaml_node_t *node);
+static int Stream(FILE *fp, int depth, char why[], size_t len);
+
+static const char *Str(yaml_node_t *n)
+{
+  return (const char *)n->data.scalar.value;
+}
+
+static int Bad(Ctx *c, yaml_node_t *n, const char *what)
+{
+  snprintf(c->why, c->len, "line %lu: %s", n ? (unsigned long)n->start_mark.line + 1 : 0UL, what);
+  return 1;
+}
+
+/* A sequence item: a scalar, or a mapping of at most one pair (not a merge) read as a layer */
+static int Item(Ctx *c, yaml_node_t *it)
+{
+  yaml_node_pair_t *p;
+
+  if (!it) return Bad(c, it, "corrupt YAML document");
+  if (it->type == YAML_SCALAR_NODE) return 0;
+  if (it->type != YAML_MAPPING_NODE) return Bad(c, it, "a list item must be a value or a 'key: value' pair");
+  p = it->data.mapping.pairs.start;
+  if (it->data.mapping.pairs.top - p > 1) return Bad(c, it, "a list item may hold one 'key: value' pair only");
+  if (p < it->data.mapping.pairs.top) {
+    yaml_node_t *k = yaml_document_get_node(c->doc, p->key);
+    if (!k || k->type != YAML_SCALAR_NODE) return Bad(c, it, "an option name must be a plain word");
+    if (!strcmp(Str(k), "<<")) return Bad(c, k, "the merge key '<<' is not accepted inside a list");
+  }
+  return Layer(c, it);
+}
+
+/* A "<<" value: a mapping or a sequence of mappings */
+static int Merge(Ctx *c, yaml_node_t *v)
+{
+  if (v->type == YAML_MAPPING_NODE) return Layer(c, v);
+  if (v->type != YAML_SEQUENCE_NODE) return Bad(c, v, "'<<' needs a mapping or a list of mappings");
+  for (yaml_node_item_t *i = v->data.sequence.items.start; i < v->data.sequence.items.top; ++i) {
+    yaml_node_t *m = yaml_document_get_node(c->doc, *i);
+    if (!m || m->type != YAML_MAPPING_NODE) return Bad(c, v, "'<<' needs a mapping or a list of mappings");
+    if (Layer(c, m)) return 1;
+  }
+  return 0;
+}
+
+/* A "$$" key's value: with the tag !include, the YAML file it names */
+static int Include(Ctx *c, yaml_node_t *v)
+{
+  const char *tag = (const char *)v->tag;
+  size_t      n   = tag ? strlen(tag) : 0;
+  char        inner[512];
+  FILE       *fp;
+  int         bad;
+
+  if (n < 8 || strcmp(tag + n - 8, "!include") || v->type != YAML_SCALAR_NODE) return 0;
+  if (!(fp = fopen(Str(v), "r"))) {
+    snprintf(inner, sizeof(inner), "!include %s: cannot read the file; check the path", Str(v));
+    return Bad(c, v, inner);
+  }
+  bad = Stream(fp, c->depth + 1, inner, sizeof(inner));
+  fclose(fp);
+  if (bad && strstr(inner, ": !include ")) snprintf(c->why, c->len, "%s", inner); /* the innermost file's failure */
+  else if (bad) snprintf(c->why, c->len, "line %lu: !include %s: %s", (unsigned long)v->start_mark.line + 1, Str(v), inner);
+  return bad;
+}
+
+/* One value of a key */
+static int Value(Ctx *c, yaml_node_t *k, yaml_node_t *v)
+{
+  int bad = 0;
+
+  if (!strcmp(Str(k), "<<")) return Merge(c, v);
+  if (!strncmp(Str(k), "$$", 2)) return Include(c, v);
+  if (!strcmp(Str(k), "options_file") || !strcmp(Str(k), "options_file_yaml"))
+    return Bad(c, k, "PETSc does not read an options file named inside a YAML file; give it on the command line, or include a YAML file with '$$name: !include file.yaml'");
+  if (v->type == YAML_MAPPING_NODE) return Layer(c, v);
+  if (v->type == YAML_SEQUENCE_NODE)
+    for (yaml_node_item_t *i = v->data.sequence.items.start; i < v->data.sequence.items.top && !bad; ++i) bad = Item(c, yaml_document_get_node(c->doc, *i));
+  return bad;
+}
+
+static int Layer(Ctx *c, yaml_node_t *node)
+{
+  if (node->type != YAML_MAPPING_NODE) return Bad(c, node, "expected 'option: value' lines (a mapping), not a list or a bare value");
+  for (yaml_node_pair_t *p = node->data.mapping.pairs.start; p < node->data.mapping.pairs.top; ++p) {
+    yaml_node_t *k = yaml_document_get_node(c->doc, p->key), *v = yaml_document_get_node(c->doc, p->value);
+
+    if (!k || !v) return Bad(c, node, "corrupt YAML document");
+    if (k->type != YAML_SCALAR_NODE) return Bad(c, k, "an option name must be a plain word");
+    if (Value(c, k, v)) return 1;
+  }
+  return 0;
+}
+
+static int Stream(FILE *fp, int depth, char why[], size_t len)
+{
+  yaml_parser_t   parser;
+  yaml_document_t doc;
+  yaml_node_t    *root;
+  Ctx             c   = {&doc, why, len, depth};
+  int             bad = 0;
+
+  if (depth > MAX_DEPTH) return snprintf(why, len, "!include nested more than %d deep (does a file include itself?)", MAX_DEPTH), 1;
+  if (!yaml_parser_initialize(&parser)) return snprintf(why, len, "the YAML parser cannot start"), 1;
+  yaml_parser_set_input_file(&parser, fp);
+  do {
+    if (!yaml_parser_load(&parser, &doc)) {
+      snprintf(why, len, "not valid YAML (line %lu, column %lu: %s)", (unsigned long)parser.problem_mark.line + 1, (unsigned long)parser.problem_mark.column + 1, parser.problem ? parser.problem : "parse error");
+      bad = 1;
+      break;
+    }
+    root = yaml_document_get_root_node(&doc);
+    if (root) bad = Layer(&c, root);
+    yaml_document_delete(&doc);
+  } while (root && !bad);
+  yaml_parser_delete(&parser);
+  return bad;
+}
+
+/* 0 if PETSc can read the stream fp as options; else 1 with the reason in why */
+int SPCheckYAMLStream(FILE *fp, char why[], size_t len)
+{
+  return Stream(fp, 0, why, len);
+}
