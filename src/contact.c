@@ -168,6 +168,24 @@ static PetscErrorCode CheckFriction(SPContact c)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Options read (for -help, or before the run's kind is known) that this run does not use: put back
+   as unread, so the end-of-run report names them (options-unread.c) */
+static PetscErrorCode UnreadUnused(SPContact c)
+{
+  static const char *const friction[] = {"-contact_friction_alpha", "-contact_friction_creep_rtol", "-contact_friction_max_flips", "-contact_friction_stick_hold", "-contact_friction_jump_wait", "-contact_friction_slip_rtol", "-contact_shift_predict"};
+
+  PetscFunctionBeginUser;
+  if (!c->enabled) {
+    PetscCall(SPOptionsUnread("-contact_"));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  for (size_t k = 0; k < sizeof(friction) / sizeof(friction[0]) && !c->friction; ++k) PetscCall(SPOptionsUnread(friction[k]));
+  if (c->method != &SPMethodALM) PetscCall(SPOptionsUnread("-contact_alm_max"));
+  if (c->params.accel != SP_ACCEL_ANDERSON) PetscCall(SPOptionsUnread("-contact_shift_accel_depth"));
+  if (!c->nuser) PetscCall(SPOptionsUnread("-contact_pair_exchange_all"));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode SPContactSetFromOptions(SPContact c)
 {
   MPI_Comm  comm = PetscObjectComm((PetscObject)c->dm);
@@ -234,6 +252,7 @@ PetscErrorCode SPContactSetFromOptions(SPContact c)
   PetscCall(CheckFriction(c));
   PetscCheck(c->nob > 0 || !setValues, comm, PETSC_ERR_USER_INPUT, "-contact_values given but no obstacle: add -contact_obstacle_0_type plane|sphere|cylinder (deformable bodies: -contact_pair_0_slave_values/-contact_pair_0_master_values)");
   PetscCheck(c->nob == 0 || setValues, comm, PETSC_ERR_USER_INPUT, "contact obstacle given but no slave boundary: add -contact_values <label values> (and -contact_label)");
+  if (!c->enabled) PetscCall(UnreadUnused(c));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -272,6 +291,7 @@ PetscErrorCode SPContactSetUp(SPContact c)
   PetscCall(SPFrictionSetUp(c));
   PetscCallMPI(MPI_Allreduce(&c->n, &nAll, 1, MPIU_INT, MPI_SUM, comm));
   PetscCheck(nAll > 0, comm, PETSC_ERR_USER_INPUT, "-contact_values: the slave boundary has no vertices");
+  PetscCall(UnreadUnused(c));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

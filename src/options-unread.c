@@ -1,0 +1,27 @@
+/* Options a run read but does not use (an option of another method, friction options without
+   friction, contact options without contact) are put back as unread, so that the end-of-run
+   report of unused options (main.c) names them as it names a misspelt one. PETSc marks an option
+   used once read and has no call to unmark it: the option is removed and set again with its value
+   (a new entry is unread). */
+#include <spcontact-impl.h>
+
+/* Every option given whose name begins with key (with its dash) */
+PetscErrorCode SPOptionsUnread(const char key[])
+{
+  char *all, name[256], value[PETSC_MAX_PATH_LEN];
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsGetAll(NULL, &all));
+  for (size_t i = 0; all[i]; ++i) {
+    PetscBool set;
+    if (!SPOptionsNameAt(all, i, key)) continue;
+    i += SPOptionsNameCopy(all, i, name, sizeof(name)) - 1;
+    value[0] = 0;
+    PetscCall(PetscOptionsGetString(NULL, NULL, name, value, sizeof(value), &set));
+    if (!set) continue;
+    PetscCall(PetscOptionsClearValue(NULL, name));
+    PetscCall(PetscOptionsSetValue(NULL, name, value[0] ? value : NULL));
+  }
+  PetscCall(PetscFree(all));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
