@@ -256,6 +256,7 @@ struct _n_SPContact {
   PetscReal       chatterTension;                  /* -contact_chatter_tension, relative to peakIterate */
   PetscReal       peakIterate;                     /* the largest pressure -eps (g + s) at the last bookkeeping */
   PetscInt        chatterHolds;                    /* boundaries x points at which the chatter hold kept a point closed */
+  PetscInt        accelStepsBefore;                /* accelerated shift updates of the run before a restart (summary) */
   PetscBool       safeguard, settled;
   PetscReal       jumpWait;   /* -contact_friction_jump_wait (contact-friction.c) */
   PetscInt        jumpWaits;  /* boundaries at which it held the shifts back */

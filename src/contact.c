@@ -474,7 +474,7 @@ static PetscErrorCode ViewSetUp(SPContact c, PetscViewer v)
     PetscCall(PetscViewerASCIIPrintf(v, "contact_jacobian_mallocs %g\n", (double)info.mallocs));
   }
   PetscCall(SPShiftAccelGetSteps(c->accel, &accelSteps));
-  PetscCall(PetscViewerASCIIPrintf(v, "contact_shift_accel %s\ncontact_shift_accel_steps %" PetscInt_FMT "\n", SPShiftAccelTypes[c->params.accel], accelSteps));
+  PetscCall(PetscViewerASCIIPrintf(v, "contact_shift_accel %s\ncontact_shift_accel_steps %" PetscInt_FMT "\n", SPShiftAccelTypes[c->params.accel], accelSteps + c->accelStepsBefore));
   PetscCall(PetscViewerASCIIPrintf(v, "contact_alpha %g\n", c->penalty > 0.0 ? 0.0 : (double)c->alpha));
   PetscCall(PetscViewerASCIIPrintf(v, "contact_eps_min %.10e\ncontact_eps_max %.10e\n", (double)gmin, (double)gmax));
   PetscCall(PetscViewerASCIIPrintf(v, "contact_length_scale %.10e\ncontact_gap_rtol %g\ncontact_gap_tol %.6e\n", (double)c->lengthScale, c->gapTolSet ? 0.0 : (double)c->gapRtol, (double)c->gapTol));

@@ -55,7 +55,20 @@ rs_case() {
   # the Newton count is the same on the same rank count; on another one the partition changes the
   # rounding of reductions and a solve near its tolerance may take one iteration more or less
   # (two-pass F4 3 -> 1 with the Anderson update: 83 to 86)
-  if [ "$np2" = "$np" ]; then same_summary "$CASE_DIR/full.txt" "$CASE_DIR/rest.txt" 0 newton_iterations || rc=1
+  # the work counters carry over the restart (restart format 9): the same on the same rank count,
+  # but the restarted process assembles the Jacobian and builds the preconditioner it had no copy
+  # of (one reuse or keep fewer, at most) and the pairs' pattern of its new matrix (one more)
+  if [ "$np2" = "$np" ]; then
+    same_summary "$CASE_DIR/full.txt" "$CASE_DIR/rest.txt" 0 newton_iterations linear_iterations refined_steps refinement_linear_iterations linear_solves_accepted contact_evaluations contact_shift_updates contact_shift_accel_steps || rc=1
+    local jf jr pf pr key
+    for key in jacobian_reuses preconditioner_kept; do
+      jf=$(sval "$CASE_DIR/full.txt" $key) jr=$(sval "$CASE_DIR/rest.txt" $key)
+      assert_le "$key, restarted <= uninterrupted" "$jr" "$jf" || rc=1
+      assert_ge "$key, restarted >= uninterrupted - 1" "$jr" "$((jf - 1))" || rc=1
+    done
+    pf=$(sval "$CASE_DIR/full.txt" contact_pattern_rebuilds) pr=$(sval "$CASE_DIR/rest.txt" contact_pattern_rebuilds)
+    assert_ge "contact_pattern_rebuilds, restarted >= uninterrupted" "$pr" "$pf" || rc=1
+    assert_le "contact_pattern_rebuilds, restarted <= uninterrupted + 1" "$pr" "$((pf + 1))" || rc=1
   else assert_close "newton_iterations (another rank count: +-1)" "$(sval "$CASE_DIR/rest.txt" newton_iterations)" "$(sval "$CASE_DIR/full.txt" newton_iterations)" 0 1 || rc=1; fi
   same_summary "$CASE_DIR/full.txt" "$CASE_DIR/rest.txt" 1e-10 load_factor load_steps displacement_max \
     contact_active_points contact_max_penetration contact_gap_error contact_force_x contact_force_y contact_peak_pressure contact_radius contact_retries_step_cap || rc=1
@@ -111,6 +124,11 @@ test_restart_friction_patch_3to1() { RS_NP=1 rs_case 3 -options_file input/frict
 # Friction on a sliding pair, 2 ranks -> 1: the points' flag that refreshes the committed tangent
 # basis at the next solve's start is in the file (without it the restarted run kept the stale
 # basis: forces 1e-6 off the uninterrupted run's)
+# the work counters over a restart: the preconditioner kept and the refined steps (B4 at 8^3, CG +
+# GAMG), the accelerated shift updates (the two-pass patch test, Anderson) are those of the
+# uninterrupted run (before, the restarted run counted them from 0)
+test_restart_counters_iterative() { rs_case 1 -options_file input/indent3d.opts -dm_plex_box_faces 8,8,8; }
+test_restart_counters_anderson()  { rs_case 2 -options_file input/patch_4_5.opts -contact_two_pass; }
 test_restart_friction_pair_slide_2to1() { RS_NP=1 rs_case 2 -options_file input/slide2d.opts -contact_friction_mu 0.3; }
 
 # rs_kill SIG CODE: a real signal from outside (1 rank, no launcher): the run stops after the step
