@@ -78,7 +78,6 @@ PetscErrorCode SPContactPairsSetFromOptions(SPContact c)
   PetscFunctionBeginUser;
   PetscOptionsBegin(comm, NULL, "Contact pairs", "spcontact");
   PetscCall(PetscOptionsBool("-contact_pair_exchange_all", "Contact pairs: send every master facet to every rank at each evaluation (default: only to ranks whose slave bounding box, inflated by 2 x the largest facet, they meet)", "SPContactPairsSetFromOptions", c->exchangeAll, &c->exchangeAll, NULL));
-  PetscCall(PetscOptionsBool("-contact_two_pass", "Contact pairs: each surface also acts as slave of the other (mirrored pair); each pass carries half of the areas", "SPContactPairsSetFromOptions", c->twoPass, &c->twoPass, NULL));
   PetscOptionsEnd();
   for (c->nuser = 0; c->nuser < SP_MAX_PAIRS; ++c->nuser) {
     PetscCall(PairSetFromOptions(comm, c->nuser, c->mu, &c->pair[c->nuser], &found));

@@ -102,12 +102,11 @@ static PetscErrorCode ObstacleSetFromOptions(MPI_Comm comm, PetscInt i, PetscInt
 static PetscErrorCode AccelSetFromOptions(PetscOptionItems *PetscOptionsObject, SPContact c)
 {
   MPI_Comm  comm    = PetscObjectComm((PetscObject)c->dm);
-  PetscBool plain   = c->method->update == SPShiftIncrement ? PETSC_TRUE : PETSC_FALSE, twoPass = PETSC_FALSE, set;
+  PetscBool plain   = c->method->update == SPShiftIncrement ? PETSC_TRUE : PETSC_FALSE, set;
   PetscInt  type;
 
   PetscFunctionBeginUser;
-  PetscCall(PetscOptionsGetBool(NULL, NULL, "-contact_two_pass", &twoPass, NULL));
-  type = plain && twoPass ? SP_ACCEL_ANDERSON : SP_ACCEL_NONE;
+  type = plain && c->twoPass ? SP_ACCEL_ANDERSON : SP_ACCEL_NONE;
   PetscCall(PetscOptionsEList("-contact_shift_accel", "shifted and alm: acceleration of the shift update s <- s + g (shifted: at each Newton-iteration boundary; alm: after each converged solve) on a settled set of active points: none or anderson (Anderson mixing of the last m updates over all active points; plain update when ill-conditioned or when the gap residual grew). Default: none, anderson with -contact_two_pass", "SPContactSetFromOptions", SPShiftAccelTypes, 2, SPShiftAccelTypes[type], &type, &set));
   PetscCall(PetscOptionsInt("-contact_shift_accel_depth", "With -contact_shift_accel anderson: number m of past updates combined (1..50)", "SPContactSetFromOptions", c->params.accelDepth, &c->params.accelDepth, NULL));
   PetscCheck(c->params.accelDepth >= 1 && c->params.accelDepth <= 50, comm, PETSC_ERR_USER_INPUT, "-contact_shift_accel_depth %" PetscInt_FMT ": give 1..50 past updates", c->params.accelDepth);
@@ -190,10 +189,12 @@ PetscErrorCode SPContactSetFromOptions(SPContact c)
 {
   MPI_Comm  comm = PetscObjectComm((PetscObject)c->dm);
   PetscInt  tangent = (PetscInt)c->tangent;
-  PetscBool setValues, setPenalty, twoPass = PETSC_FALSE;
+  PetscBool setValues, setPenalty;
 
   PetscFunctionBeginUser;
   PetscOptionsBegin(comm, NULL, "Contact options", "spcontact");
+  /* first: the defaults of the shift acceleration and of the chatter hold depend on it */
+  PetscCall(PetscOptionsBool("-contact_two_pass", "Contact pairs: each surface also acts as slave of the other (mirrored pair); each pass carries half of the areas", "SPContactSetFromOptions", c->twoPass, &c->twoPass, NULL));
   PetscCall(MethodSetFromOptions(PetscOptionsObject, c));
   PetscCall(SPFrictionSetFromOptions(PetscOptionsObject, c));
   PetscCall(PetscOptionsString("-contact_label", "Mesh label of the slave boundary", "SPContactSetFromOptions", c->label, c->label, sizeof(c->label), NULL));
@@ -206,8 +207,7 @@ PetscErrorCode SPContactSetFromOptions(SPContact c)
   PetscCall(PetscOptionsBool("-contact_safeguard", "Update the shift only of points active in both the previous and the new iterate (method.md 4.1); false only to demonstrate chatter", "SPContactSetFromOptions", c->safeguard, &c->safeguard, NULL));
   PetscCall(PetscOptionsBool("-contact_shift_predict", "Friction, shifted: a load step whose increment is proportional to the last one (every condition's amplitude moves in proportion), after a step that changed no point's status, starts the stuck points from the tangential tractions extrapolated from the last two converged steps", "SPContactSetFromOptions", c->predict, &c->predict, NULL));
   PetscCall(PetscOptionsBool("-contact_branch_hold", "Shifted and alm: the Newton step after a shift update (alm: the first of the solve after an augmentation) linearises every point on its branch of the iterate before the update (closed: p = -eps (g + s) even where the new shift opens it; stuck or slipping as it was), not on the one the update gives at the unchanged displacement; not with -contact_shift_accel anderson", "SPContactSetFromOptions", c->branchHold, &c->branchHold, NULL));
-  PetscCall(PetscOptionsGetBool(NULL, NULL, "-contact_two_pass", &twoPass, NULL));
-  if (twoPass) c->chatterFlips = 0; /* the hold's default with two-pass pairs: off (contact-enforce.c) */
+  if (c->twoPass) c->chatterFlips = 0; /* the hold's default with two-pass pairs: off (contact-enforce.c) */
   PetscCall(PetscOptionsInt("-contact_chatter_flips", "Shifted and alm: a point that changed between open and closed this many times in a Newton solve stays closed while its tension eps (g + s) is below -contact_chatter_tension times the iterate's peak pressure (0: off; default 3, 0 with -contact_two_pass)", "SPContactSetFromOptions", c->chatterFlips, &c->chatterFlips, NULL));
   PetscCall(PetscOptionsReal("-contact_chatter_tension", "The tension, relative to the iterate's peak contact pressure, below which a chattering point stays closed (-contact_chatter_flips)", "SPContactSetFromOptions", c->chatterTension, &c->chatterTension, NULL));
   PetscCall(PetscOptionsBool("-contact_shift_settled", "In-Newton shift update only at iterations whose active set did not change (the contraction rate holds only then)", "SPContactSetFromOptions", c->settled, &c->settled, NULL));
