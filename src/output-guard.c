@@ -73,7 +73,13 @@ static int Cause(const char file[], int err)
   return err ? err : EIO;
 }
 
-#define WRITE_FAILED "writing %s failed: %s (disk full? check the free space and -output_dir); the files keep their .part names"
+#define WRITE_FAILED "writing %s failed: %s (%s); the files keep their .part names"
+
+/* What to look at for a failure's cause: the space for a full disk, else the file's path */
+static const char *Hint(int err)
+{
+  return err == ENOSPC || err == EFBIG || err == EDQUOT || err == EIO ? "disk full? check the free space and -output_dir" : "check -output_dir and -output_name";
+}
 
 /* ierr: what the guarded writes returned on this rank. Collective, except when a collective HDF5
    write failed on a rank of several: that rank prints the line and ends the job (MPI_Abort), since
@@ -87,7 +93,7 @@ PetscErrorCode SPOutputWriteEnd(SPOutput o, PetscErrorCode ierr)
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_size(comm, &size));
   if (mine && o->guard.collective && size > 1) {
-    fprintf(stderr, "spcontact: error: " WRITE_FAILED "\n", o->guard.file, strerror(mine));
+    fprintf(stderr, "spcontact: error: " WRITE_FAILED "\n", o->guard.file, strerror(mine), Hint(mine));
     fflush(stderr);
     PetscCallMPI(MPI_Abort(comm, 1));
   }
@@ -96,7 +102,7 @@ PetscErrorCode SPOutputWriteEnd(SPOutput o, PetscErrorCode ierr)
   PetscCall(PetscPopErrorHandler());
   H5Eset_auto2(H5E_DEFAULT, o->guard.func, o->guard.data);
   o->guard.open = PETSC_FALSE;
-  PetscCheck(!err, comm, PETSC_ERR_FILE_WRITE, WRITE_FAILED, o->guard.file, strerror(err));
+  PetscCheck(!err, comm, PETSC_ERR_FILE_WRITE, WRITE_FAILED, o->guard.file, strerror(err), Hint(err));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -278,6 +278,22 @@ test_bad_input_disk_full_np2() {
   return $rc
 }
 
+# The surface XDMF, which rank 0 alone writes at the end, cannot be written (its .part name a
+# dangling symbolic link: not caught by the checks before the solve) on 2 ranks: one line naming
+# the file and the cause, exit 1 (before: rank 0 left before the broadcast the other rank waited
+# in, and the job hung: 124 after 20 s); the files keep their .part names
+test_bad_input_surface_xmf_np2() {
+  local rc=0 code
+  ln -sfn /nonexistent/dir/x "$CASE_DIR/b-surface.xmf.part"
+  RERUN="ln -s /nonexistent/dir/x $CASE_DIR/b-surface.xmf.part; timeout 120 $MPIEXEC -n 2 $SPC -options_file input/block2d.opts -load_steps 2 -output_dir $CASE_DIR -output_name b"
+  timeout 120 $MPIEXEC -n 2 $SPC -options_file input/block2d.opts -load_steps 2 -output_dir "$CASE_DIR" -output_name b -quiet >"$CASE_DIR/o.txt" 2>&1; code=$?
+  assert_eq "exit code (1: not a hang 124)" "$code" 1 || rc=1
+  assert_eq "error line" "$(grep -c "^spcontact: error: writing $CASE_DIR/b-surface.xmf.part failed: No such file or directory (check -output_dir and -output_name); the files keep their .part names$" "$CASE_DIR/o.txt")" 1 || rc=1
+  assert_eq "PETSc error lines" "$(grep -c 'PETSC ERROR' "$CASE_DIR/o.txt")" 0 || rc=1
+  assert_eq "files, all .part" "$(cd "$CASE_DIR" && ls b.* b_* b-* | tr '\n' ' ')" "b-surface.xmf.part b-xdmf2.xmf.part b.csv.part b.h5.part b.xmf.part b_contact.csv.part " || rc=1
+  return $rc
+}
+
 # A one-line error raised by one rank alone (an internal error such as a PETSc argument check,
 # not an input check, which every rank raises together) used to leave the other ranks waiting in
 # the run's next collective: the job hung (found with friction on a 3D pair, since fixed). Now the
