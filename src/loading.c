@@ -10,15 +10,17 @@
    SPRestartLoad restored. */
 #include <spcontact-impl.h>
 
-/* The step's solve and, for methods that update after a converged solve, those updates and solves */
-static PetscErrorCode SolveAndUpdate(SPApp app, SNESConvergedReason *reason)
+/* The step's solve and, for methods that update after a converged solve, those updates and solves;
+   *spent: the step failed because the method's update budget (-contact_alm_max) is spent */
+static PetscErrorCode SolveAndUpdate(SPApp app, SNESConvergedReason *reason, PetscBool *spent)
 {
   PetscFunctionBeginUser;
+  *spent = PETSC_FALSE;
   PetscCall(SPSolverSolve(app->solver, app->u, reason));
   for (PetscInt k = 0; *reason > 0; ++k) { /* the method's update after a converged solve */
     PetscBool again, failed;
     PetscCall(SPContactSolveUpdate(app->contact, app->u, k, &again, &failed));
-    if (failed) *reason = SNES_DIVERGED_MAX_IT;
+    if (failed) *reason = SNES_DIVERGED_MAX_IT, *spent = PETSC_TRUE;
     if (!again) break;
     PetscCall(SPSolverSolve(app->solver, app->u, reason));
   }
@@ -31,6 +33,7 @@ static PetscErrorCode SolveStep(SPApp app, PetscReal load, PetscReal ratio, Pets
 {
   SNESConvergedReason reason;
   FILE               *fp;
+  PetscBool           spent;
 
   PetscFunctionBeginUser;
   PetscCall(VecCopy(app->u, ubackup));
@@ -39,23 +42,23 @@ static PetscErrorCode SolveStep(SPApp app, PetscReal load, PetscReal ratio, Pets
   PetscCall(SPOutputGetHistoryFile(app->output, &fp));
   PetscCall(SPSolverSetHistory(app->solver, fp, step));
   SPContactPredictNext(app->contact, ratio);
-  PetscCall(SolveAndUpdate(app, &reason));
+  PetscCall(SolveAndUpdate(app, &reason, &spent));
   for (PetscInt k = 0; k < 2 && reason < 0; ++k) { /* the recoveries (the direct solver and the GMRES */
     PetscBool retry = PETSC_FALSE;                  /* one once per run, the step cap up to twice per step): the step again, no cut-back */
     if (reason == SNES_DIVERGED_LINEAR_SOLVE) {
       PetscCall(SPSolverRecoverDirect(app->solver, &retry));
       if (!retry) PetscCall(SPSolverRecoverBreakdown(app->solver, &retry));
-    } else if (SPSolverStalled(app->solver) || reason == SNES_DIVERGED_MAX_IT) PetscCall(SPContactTightenStepCap(app->contact, &retry));
+    } else if (!spent && (SPSolverStalled(app->solver) || reason == SNES_DIVERGED_MAX_IT)) PetscCall(SPContactTightenStepCap(app->contact, &retry)); /* a spent update budget: a smaller increment, not a tighter cap */
     if (!retry) break;
     PetscCall(VecCopy(ubackup, app->u));
     PetscCall(SPContactRestoreState(app->contact));
     SPContactPredictNext(app->contact, ratio);
-    PetscCall(SolveAndUpdate(app, &reason));
+    PetscCall(SolveAndUpdate(app, &reason, &spent));
   }
   *ok = reason > 0 ? PETSC_TRUE : PETSC_FALSE;
   if (*ok) SPContactRestoreStepCap(app->contact); /* a failed step's cut-back keeps the tighter cap */
   if (!*ok) {
-    PetscCall(PetscPrintf(app->comm, "load step %" PetscInt_FMT " (load factor %g): solve did not converge (%s)\n", step, (double)load, SPSolverReasonName(app->solver, reason)));
+    PetscCall(PetscPrintf(app->comm, "load step %" PetscInt_FMT " (load factor %g): solve did not converge (%s)\n", step, (double)load, spent ? "update budget spent" : SPSolverReasonName(app->solver, reason)));
     PetscCall(VecCopy(ubackup, app->u));
     PetscCall(SPContactRestoreState(app->contact));
   }

@@ -467,3 +467,19 @@ regression m < 3|input/block2d.opts|-contact_regression_m 2
 obstacle without slave values|input/block2d.opts|-contact_values
 CASES
 }
+
+# alm's update budget spent (-contact_alm_max 2 on B2 at alpha 10, which needs about 10
+# augmentations): the step is cut back, not solved again with a tighter step cap (the cap
+# controls Newton steps; it did not help alm's multiplier updates: before, each failure took two
+# step-cap retries first). With one cut-back allowed: two failures named "update budget spent",
+# no step-cap retry, status failed, exit 2.
+test_contact_alm_budget_spent() {
+  local rc=0 code
+  spc "$CASE_DIR/run.txt" 1 -options_file input/hertz2d.opts -contact_method alm -contact_alm_max 2 -load_max_cutbacks 1 -output_dir "$CASE_DIR" -output_name spent; code=$?
+  assert_eq "exit code" "$code" 2 || rc=1
+  assert_eq "failures named" "$(grep -c 'solve did not converge (update budget spent)$' "$CASE_DIR/run.txt")" 2 || rc=1
+  assert_eq "budget lines" "$(grep -c '^alm: gap tolerance .* not reached after 2 updates .*raise -contact_alm_max$' "$CASE_DIR/run.txt")" 2 || rc=1
+  assert_eq "step-cap retries" "$(sval "$CASE_DIR/run.txt" contact_retries_step_cap) $(grep -c 'again with -contact_step_cap' "$CASE_DIR/run.txt")" "0 0" || rc=1
+  assert_eq "status" "$(sval "$CASE_DIR/run.txt" status)" failed || rc=1
+  return $rc
+}
