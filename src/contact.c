@@ -140,7 +140,9 @@ static PetscErrorCode MethodSetFromOptions(PetscOptionItems *PetscOptionsObject,
   c->params.accelDepth = 5;
   for (PetscInt k = 0; k < n; ++k) {
     SPMethodParams other = c->params;
+    other.maxOption      = NULL;
     if (SPMethodTable[k]->setFromOptions) PetscCall(SPMethodTable[k]->setFromOptions(PetscOptionsObject, k == pick ? &c->params : &other));
+    if (k != pick && other.maxOption) PetscCall(SPOptionsUnread(other.maxOption)); /* another method's: reported if given (options-unread.c) */
   }
   PetscCall(AccelSetFromOptions(PetscOptionsObject, c));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -168,7 +170,8 @@ static PetscErrorCode CheckFriction(SPContact c)
 }
 
 /* Options read (for -help, or before the run's kind is known) that this run does not use: put back
-   as unread, so the end-of-run report names them (options-unread.c) */
+   as unread, so the end-of-run report names them (options-unread.c; another method's options:
+   MethodSetFromOptions) */
 static PetscErrorCode UnreadUnused(SPContact c)
 {
   static const char *const friction[] = {"-contact_friction_alpha", "-contact_friction_creep_rtol", "-contact_friction_max_flips", "-contact_friction_stick_hold", "-contact_friction_jump_wait", "-contact_friction_slip_rtol", "-contact_shift_predict"};
@@ -179,7 +182,6 @@ static PetscErrorCode UnreadUnused(SPContact c)
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   for (size_t k = 0; k < sizeof(friction) / sizeof(friction[0]) && !c->friction; ++k) PetscCall(SPOptionsUnread(friction[k]));
-  if (c->method != &SPMethodALM) PetscCall(SPOptionsUnread("-contact_alm_max"));
   if (c->params.accel != SP_ACCEL_ANDERSON) PetscCall(SPOptionsUnread("-contact_shift_accel_depth"));
   if (!c->nuser) PetscCall(SPOptionsUnread("-contact_pair_exchange_all"));
   PetscFunctionReturn(PETSC_SUCCESS);
