@@ -306,6 +306,25 @@ static PetscErrorCode WorkRestore(Work *w)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The DS's boundary b if it is a natural one (a Neumann or pressure term): its weak form, label,
+   values and field; *natural false for an essential one */
+typedef struct {
+  PetscWeakForm   wf;
+  DMLabel         label;
+  const PetscInt *values;
+  PetscInt        nv, field;
+} Natural;
+
+static PetscErrorCode GetNatural(PetscDS ds, PetscInt b, Natural *n, PetscBool *natural)
+{
+  DMBoundaryConditionType type;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscDSGetBoundary(ds, b, &n->wf, &type, NULL, &n->label, &n->nv, &n->values, &n->field, NULL, NULL, NULL, NULL, NULL));
+  *natural = type & DM_BC_ESSENTIAL ? PETSC_FALSE : PETSC_TRUE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* Boundary Jacobians exactly as PETSc's Jacobian adds them (follower pressure: its load
    stiffness), for every natural boundary of the DS that has one */
 static PetscErrorCode AddBoundaryJacobian(SPFastElastic f, Vec locX, Mat P)
@@ -317,16 +336,12 @@ static PetscErrorCode AddBoundaryJacobian(SPFastElastic f, Vec locX, Mat P)
   PetscCall(DMGetDS(f->dm, &ds));
   PetscCall(PetscDSGetNumBoundary(ds, &nbd));
   for (PetscInt b = 0; b < nbd; ++b) {
-    PetscWeakForm           wf;
-    DMBoundaryConditionType type;
-    DMLabel                 label;
-    const PetscInt         *values;
-    PetscInt                nv, field;
-    PetscBool               has;
-    PetscCall(PetscDSGetBoundary(ds, b, &wf, &type, NULL, &label, &nv, &values, &field, NULL, NULL, NULL, NULL, NULL));
-    if (type & DM_BC_ESSENTIAL) continue;
-    PetscCall(PetscWeakFormHasBdJacobian(wf, &has));
-    if (has) PetscCall(DMPlexComputeBdJacobianSingle(f->dm, PETSC_MIN_REAL, wf, label, nv, values, field, locX, NULL, 0.0, P, P));
+    Natural   n;
+    PetscBool natural, has;
+    PetscCall(GetNatural(ds, b, &n, &natural));
+    if (!natural) continue;
+    PetscCall(PetscWeakFormHasBdJacobian(n.wf, &has));
+    if (has) PetscCall(DMPlexComputeBdJacobianSingle(f->dm, PETSC_MIN_REAL, n.wf, n.label, n.nv, n.values, n.field, locX, NULL, 0.0, P, P));
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -368,16 +383,12 @@ static PetscErrorCode AddBoundaryResidual(SPFastElastic f, Vec locX, Vec locF)
   PetscCall(DMGetDS(f->dm, &ds));
   PetscCall(PetscDSGetNumBoundary(ds, &nbd));
   for (PetscInt b = 0; b < nbd; ++b) {
-    PetscWeakForm           wf;
-    DMBoundaryConditionType type;
-    DMLabel                 label;
-    const PetscInt         *values;
-    PetscInt                nv, field;
-    PetscCall(PetscDSGetBoundary(ds, b, &wf, &type, NULL, &label, &nv, &values, &field, NULL, NULL, NULL, NULL, NULL));
-    if (type & DM_BC_ESSENTIAL) continue;
-    for (PetscInt v = 0; v < nv; ++v) {
-      PetscFormKey key = {label, values[v], field, 0};
-      PetscCall(DMPlexComputeBdResidualSingle(f->dm, PETSC_MIN_REAL, wf, key, locX, NULL, locF));
+    Natural   n;
+    PetscBool natural;
+    PetscCall(GetNatural(ds, b, &n, &natural));
+    for (PetscInt v = 0; v < n.nv && natural; ++v) {
+      PetscFormKey key = {n.label, n.values[v], n.field, 0};
+      PetscCall(DMPlexComputeBdResidualSingle(f->dm, PETSC_MIN_REAL, n.wf, key, locX, NULL, locF));
     }
   }
   PetscFunctionReturn(PETSC_SUCCESS);
