@@ -306,28 +306,10 @@ static PetscErrorCode WorkRestore(Work *w)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* The DS's boundary b if it is a natural one (a Neumann or pressure term): its weak form, label,
-   values and field; *natural false for an essential one */
-typedef struct {
-  PetscWeakForm   wf;
-  DMLabel         label;
-  const PetscInt *values;
-  PetscInt        nv, field;
-} Natural;
-
-static PetscErrorCode GetNatural(PetscDS ds, PetscInt b, Natural *n, PetscBool *natural)
-{
-  DMBoundaryConditionType type;
-
-  PetscFunctionBeginUser;
-  PetscCall(PetscDSGetBoundary(ds, b, &n->wf, &type, NULL, &n->label, &n->nv, &n->values, &n->field, NULL, NULL, NULL, NULL, NULL));
-  *natural = type & DM_BC_ESSENTIAL ? PETSC_FALSE : PETSC_TRUE;
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-/* Boundary Jacobians exactly as PETSc's Jacobian adds them (follower pressure: its load
-   stiffness), for every natural boundary of the DS that has one */
-static PetscErrorCode AddBoundaryJacobian(SPFastElastic f, Vec locX, Mat P)
+/* The natural boundaries (Neumann and pressure terms) of the DS, exactly as PETSc adds them: into
+   P their Jacobians (follower pressure: its load stiffness), or into locF their residuals per
+   value (the other one NULL) */
+static PetscErrorCode AddBoundary(SPFastElastic f, Vec locX, Mat P, Vec locF)
 {
   PetscDS  ds;
   PetscInt nbd;
@@ -336,12 +318,20 @@ static PetscErrorCode AddBoundaryJacobian(SPFastElastic f, Vec locX, Mat P)
   PetscCall(DMGetDS(f->dm, &ds));
   PetscCall(PetscDSGetNumBoundary(ds, &nbd));
   for (PetscInt b = 0; b < nbd; ++b) {
-    Natural   n;
-    PetscBool natural, has;
-    PetscCall(GetNatural(ds, b, &n, &natural));
-    if (!natural) continue;
-    PetscCall(PetscWeakFormHasBdJacobian(n.wf, &has));
-    if (has) PetscCall(DMPlexComputeBdJacobianSingle(f->dm, PETSC_MIN_REAL, n.wf, n.label, n.nv, n.values, n.field, locX, NULL, 0.0, P, P));
+    PetscWeakForm           wf;
+    DMBoundaryConditionType type;
+    DMLabel                 label;
+    const PetscInt         *values;
+    PetscInt                nv, field;
+    PetscBool               has = PETSC_FALSE;
+    PetscCall(PetscDSGetBoundary(ds, b, &wf, &type, NULL, &label, &nv, &values, &field, NULL, NULL, NULL, NULL, NULL));
+    if (type & DM_BC_ESSENTIAL) continue;
+    if (P) PetscCall(PetscWeakFormHasBdJacobian(wf, &has));
+    if (has) PetscCall(DMPlexComputeBdJacobianSingle(f->dm, PETSC_MIN_REAL, wf, label, nv, values, field, locX, NULL, 0.0, P, P));
+    for (PetscInt v = 0; v < nv && locF; ++v) {
+      PetscFormKey key = {label, values[v], field, 0};
+      PetscCall(DMPlexComputeBdResidualSingle(f->dm, PETSC_MIN_REAL, wf, key, locX, NULL, locF));
+    }
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -367,30 +357,9 @@ PetscErrorCode SPFastElasticAddJacobian(SPFastElastic f, Vec locX, Mat P)
   }
   PetscCall(VecRestoreArrayRead(locX, &x));
   PetscCall(WorkRestore(&w));
-  PetscCall(AddBoundaryJacobian(f, locX, P));
+  PetscCall(AddBoundary(f, locX, P, NULL));
   PetscCall(MatAssemblyBegin(P, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(P, MAT_FINAL_ASSEMBLY));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-/* Neumann terms exactly as PETSc's residual adds them: every natural boundary of the DS, per value */
-static PetscErrorCode AddBoundaryResidual(SPFastElastic f, Vec locX, Vec locF)
-{
-  PetscDS  ds;
-  PetscInt nbd;
-
-  PetscFunctionBeginUser;
-  PetscCall(DMGetDS(f->dm, &ds));
-  PetscCall(PetscDSGetNumBoundary(ds, &nbd));
-  for (PetscInt b = 0; b < nbd; ++b) {
-    Natural   n;
-    PetscBool natural;
-    PetscCall(GetNatural(ds, b, &n, &natural));
-    for (PetscInt v = 0; v < n.nv && natural; ++v) {
-      PetscFormKey key = {n.label, n.values[v], n.field, 0};
-      PetscCall(DMPlexComputeBdResidualSingle(f->dm, PETSC_MIN_REAL, n.wf, key, locX, NULL, locF));
-    }
-  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -422,7 +391,7 @@ PetscErrorCode SPFastElasticAddResidual(SPFastElastic f, Vec locX, Vec locF)
   PetscCall(VecRestoreArray(locF, &y));
   PetscCall(VecRestoreArrayRead(locX, &x));
   PetscCall(WorkRestore(&w));
-  PetscCall(AddBoundaryResidual(f, locX, locF));
+  PetscCall(AddBoundary(f, locX, NULL, locF));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
