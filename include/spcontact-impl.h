@@ -438,6 +438,8 @@ struct _n_SPSolver {
   PetscReal           innerTarget, solveGap[2]; /* this iterate's inner-solve target (0: the residual target alone); gap error after the load step's last two converged solves (0: none) */
   PetscInt            directIts;     /* -solver_direct_switch: a 2D solve with more linear iterations switches to a factorization (solver-direct.c; 0: never) */
   PetscInt            directDofs;    /* -solver_direct_dofs: a 2D run with at most this many dofs factors from the start */
+  PetscInt            directIts3, directDofs3; /* -solver_direct_switch_3d, -solver_direct_dofs_3d: the switch of a 3D GMRES run (friction, finite strain) with at most directDofs3 dofs */
+  PetscInt            switchIts;     /* this run's switch threshold (directIts in 2D, directIts3 in 3D) */
   PetscBool           directChol;    /* -solver_direct_cholesky: the factorization of a symmetric Jacobian is Cholesky (LDL^T), else LU */
   PetscBool           directStart;   /* this run factors from the start */
   PetscBool           directAllowed; /* this run may still switch */

@@ -13,9 +13,14 @@
    about 160 s of GMRES with up to 2000 iterations per solve, B6 at alpha 1000 10141 CG
    iterations for 39 Newton iterations). MUMPS: Cholesky (LDL^T) where the Jacobian is symmetric
    (frictionless small strain), half the work (B2 as a process 0.33 -> 0.28 s); LU with friction
-   or finite strain (PETSc's own LU on one process without MUMPS, for the switch only). Not in 3D,
-   where a factorization costs more than the iterations it saves (B3, 15887 dofs: 4.7 s against
-   2.5 s with OpenBLAS, 20 s with the reference BLAS), and not when the user chose the solver
+   or finite strain (PETSc's own LU on one process without MUMPS, for the switch only). Not from
+   the start in 3D, where a factorization costs more than the iterations it saves (B3, 15887 dofs:
+   4.7 s against 2.5 s with OpenBLAS, 20 s with the reference BLAS; F3, friction, 28062 dofs, alpha
+   10: 203 s against 68 s, the same 71 Newton iterations), but a 3D run with GMRES (friction,
+   finite strain) of at most -solver_direct_dofs_3d dofs switches once a solve takes more than
+   -solver_direct_switch_3d (500) iterations or fails: F3 at alpha 1000, where GMRES + GAMG took up
+   to 2000 iterations per solve (95 Newton iterations, 3 cut-backs, 35 minutes), converges with LU
+   in 56 and none (about 2 minutes). Not when the user chose the solver
    (-ksp_type or -pc_type); -solver_direct_switch 0 keeps every solve iterative. The
    factorization is reused with the Jacobian (Jacobian reuse). A restart resumes with the solver
    of the interrupted run (the switch's step is in the restart data). */
@@ -62,7 +67,16 @@ static const char *FactorName(SPSolver s)
   return UseCholesky(s) ? "Cholesky" : "LU";
 }
 
-/* The linear solver for the run line (app.c): ksp/pc, and when a 2D run factors */
+/* The option that sets this run's switch threshold */
+static const char *SwitchOption(SPSolver s)
+{
+  PetscInt dim = 2;
+
+  (void)DMGetDimension(s->dm, &dim);
+  return dim == 3 ? "-solver_direct_switch_3d" : "-solver_direct_switch";
+}
+
+/* The linear solver for the run line (app.c): ksp/pc, and when a run factors */
 PetscErrorCode SPSolverDescribeLinear(SPSolver s, char *buf, size_t len)
 {
   const char *ksp, *pc;
@@ -72,14 +86,14 @@ PetscErrorCode SPSolverDescribeLinear(SPSolver s, char *buf, size_t len)
   ksp = ksp ? ksp : "none";
   pc  = pc ? pc : "none";
   if (s->directStart) PetscCall(PetscSNPrintf(buf, len, "%s/%s (MUMPS %s from the first solve: 2D with at most -solver_direct_dofs %" PetscInt_FMT " dofs)", ksp, pc, FactorName(s), s->directDofs));
-  else if (s->directAllowed) PetscCall(PetscSNPrintf(buf, len, "%s/%s (a sparse direct solver once a solve takes more than -solver_direct_switch %" PetscInt_FMT " iterations)", ksp, pc, s->directIts));
+  else if (s->directAllowed) PetscCall(PetscSNPrintf(buf, len, "%s/%s (a sparse direct solver once a solve takes more than %s %" PetscInt_FMT " iterations)", ksp, pc, SwitchOption(s), s->switchIts));
   else PetscCall(PetscSNPrintf(buf, len, "%s/%s", ksp, pc));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 /* After SNESSetFromOptions: whether this run factors from the start (2D, at most directDofs dofs,
-   MUMPS), or may switch later (2D, a factorization available); neither with the user's solver
-   or -solver_direct_switch 0 */
+   MUMPS), or may switch later (2D, a factorization available; 3D GMRES runs up to directDofs3,
+   MUMPS); neither with the user's solver or a switch threshold 0 */
 PetscErrorCode SPSolverSetUpDirect(SPSolver s)
 {
   PetscInt    dim, N;
@@ -91,9 +105,20 @@ PetscErrorCode SPSolverSetUpDirect(SPSolver s)
   PetscCall(DMGetDimension(s->dm, &dim));
   PetscCall(PetscOptionsHasName(NULL, NULL, "-ksp_type", &kspSet));
   PetscCall(PetscOptionsHasName(NULL, NULL, "-pc_type", &pcSet));
-  if (s->directIts <= 0 || dim != 2 || kspSet || pcSet) PetscFunctionReturn(PETSC_SUCCESS);
+  if (kspSet || pcSet) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(MatGetFactorAvailable(s->J, MATSOLVERMUMPS, MAT_FACTOR_LU, &mumps));
   PetscCall(MatGetSize(s->J, &N, NULL));
+  if (dim == 3) { /* the switch only, GMRES runs, up to directDofs3 */
+    KSP       ksp;
+    PetscBool gmres;
+    PetscCall(SNESGetKSP(s->snes, &ksp));
+    PetscCall(PetscObjectTypeCompare((PetscObject)ksp, KSPGMRES, &gmres));
+    s->switchIts     = s->directIts3;
+    s->directAllowed = gmres && mumps && s->directIts3 > 0 && N <= s->directDofs3 ? PETSC_TRUE : PETSC_FALSE;
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  s->switchIts = s->directIts;
+  if (s->directIts <= 0 || dim != 2) PetscFunctionReturn(PETSC_SUCCESS);
   if (mumps && N <= s->directDofs) {
     PetscCall(SetDirect(s));
     s->directStart = PETSC_TRUE;
@@ -115,7 +140,9 @@ static PetscErrorCode SwitchToDirect(SPSolver s, const char *why)
   PetscFunctionBeginUser;
   PetscCall(SNESGetKSP(s->snes, &ksp));
   PetscCall(KSPGetType(ksp, &ktype));
-  PetscCall(PetscPrintf(PetscObjectComm((PetscObject)s->dm), "linear solver: %s %s (2D): from here on a sparse direct solver (%s); -solver_direct_switch 0 keeps the iterative one\n", ktype, why, FactorName(s)));
+  PetscInt dim;
+  PetscCall(DMGetDimension(s->dm, &dim));
+  PetscCall(PetscPrintf(PetscObjectComm((PetscObject)s->dm), "linear solver: %s %s (%" PetscInt_FMT "D): from here on a sparse direct solver (%s); %s 0 keeps the iterative one\n", ktype, why, dim, FactorName(s), SwitchOption(s)));
   PetscCall(SetDirect(s));
   s->directStep = s->step;
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -129,7 +156,7 @@ PetscErrorCode SPSolverResumeDirect(SPSolver s, PetscInt step)
   if (s->directStart) PetscFunctionReturn(PETSC_SUCCESS); /* direct from the start again (directStep 1) */
   s->directStep = 0;
   if (step <= 0 || !s->directAllowed) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCall(PetscPrintf(PetscObjectComm((PetscObject)s->dm), "linear solver: the sparse direct solver (%s) of the interrupted run, from its load step %" PetscInt_FMT "; -solver_direct_switch 0 keeps the iterative one\n", FactorName(s), step));
+  PetscCall(PetscPrintf(PetscObjectComm((PetscObject)s->dm), "linear solver: the sparse direct solver (%s) of the interrupted run, from its load step %" PetscInt_FMT "; %s 0 keeps the iterative one\n", FactorName(s), step, SwitchOption(s)));
   PetscCall(SetDirect(s));
   s->directStep = step;
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -141,8 +168,8 @@ PetscErrorCode SPSolverDirectCheck(SPSolver s, PetscInt lits)
   char why[128];
 
   PetscFunctionBeginUser;
-  if (!s->directAllowed || lits <= s->directIts) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCall(PetscSNPrintf(why, sizeof(why), "took %" PetscInt_FMT " iterations in one solve (-solver_direct_switch %" PetscInt_FMT ")", lits, s->directIts));
+  if (!s->directAllowed || lits <= s->switchIts) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(PetscSNPrintf(why, sizeof(why), "took %" PetscInt_FMT " iterations in one solve (%s %" PetscInt_FMT ")", lits, SwitchOption(s), s->switchIts));
   PetscCall(SwitchToDirect(s, why));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -675,6 +675,8 @@ PetscErrorCode SPSolverCreate(DM dm, SPProblem problem, SPContact contact, SPLog
   s->acceptRtol  = 1e-3;
   s->directIts   = 100;
   s->directDofs  = 1000000;
+  s->directIts3  = 500;
+  s->directDofs3 = 100000;
   s->directChol  = PETSC_TRUE;
   s->pcLag       = 0.25;
   s->rtolMax     = 1e-3;
@@ -799,6 +801,8 @@ PetscErrorCode SPSolverSetFromOptions(SPSolver s)
   PetscCall(PetscOptionsBool("-solver_inexact_inner", "Inexact Newton, methods that update the shifts after a converged solve (alm), frictionless: a solve counts as converged on a settled active set once |F| <= 0.1 rho |dF| (dF: the forces the next update adds, rho: the update's contraction), the last one (gap tolerance met) at the residual target; its steps are solved no tighter than that needs (false: every solve to the residual target)", "SPSolverSetFromOptions", s->inexactInner, &s->inexactInner, NULL));
   PetscCall(PetscOptionsReal("-solver_linear_accept", "A linear solve that stops short of its tolerance (its iteration limit, a GMRES breakdown) counts as converged if its true residual |b - A x| is at most this x |b| (0: never; it then fails the Newton solve)", "SPSolverSetFromOptions", s->acceptRtol, &s->acceptRtol, NULL));
   PetscCall(PetscOptionsInt("-solver_direct_switch", "2D, solver not chosen by -ksp_type/-pc_type, more dofs than -solver_direct_dofs: once a linear solve takes more than this many iterations, or fails, the rest of the run factors the Jacobian (MUMPS) (0: never a direct solver, not from the start either)", "SPSolverSetFromOptions", s->directIts, &s->directIts, NULL));
+  PetscCall(PetscOptionsInt("-solver_direct_switch_3d", "3D with GMRES (friction, finite strain), at most -solver_direct_dofs_3d dofs, solver not chosen by -ksp_type/-pc_type, MUMPS available: once a linear solve takes more than this many iterations, or fails, the rest of the run factors the Jacobian (MUMPS LU) (0: never)", "SPSolverSetFromOptions", s->directIts3, &s->directIts3, NULL));
+  PetscCall(PetscOptionsInt("-solver_direct_dofs_3d", "The largest 3D run (displacement dofs) that -solver_direct_switch_3d may switch to a factorization", "SPSolverSetFromOptions", s->directDofs3, &s->directDofs3, NULL));
   PetscCall(PetscOptionsInt("-solver_direct_dofs", "2D, solver not chosen by -ksp_type/-pc_type, MUMPS available: a run with at most this many displacement dofs factors its Jacobian from the start (MUMPS; README Performance) (0: iterative from the start)", "SPSolverSetFromOptions", s->directDofs, &s->directDofs, NULL));
   PetscCall(PetscOptionsBool("-solver_direct_cholesky", "The 2D factorization of a symmetric Jacobian (frictionless small strain) is Cholesky (LDL^T, half the work of LU); false: LU", "SPSolverSetFromOptions", s->directChol, &s->directChol, NULL));
   PetscCall(PetscOptionsReal("-solver_pc_lag", "Linear material, frictionless, no pairs, iterative solver: a new Jacobian keeps the preconditioner (GAMG by default, or the -pc_type given; not a factorization) while the points whose active state changed since its build are at most this fraction of its active points, and while solves with it converge at least 2/3 as fast per decade as the first one (README Performance; 0: a new preconditioner with every new Jacobian)", "SPSolverSetFromOptions", s->pcLag, &s->pcLag, NULL));
@@ -810,6 +814,7 @@ PetscErrorCode SPSolverSetFromOptions(SPSolver s)
   PetscCheck(s->acceptRtol >= 0.0 && s->acceptRtol < 1.0, PetscObjectComm((PetscObject)s->dm), PETSC_ERR_USER_INPUT, "-solver_linear_accept %.6g: must be in [0, 1) (0: a linear solve short of its tolerance fails the Newton solve)", (double)s->acceptRtol);
   PetscCheck(s->directDofs >= 0, PetscObjectComm((PetscObject)s->dm), PETSC_ERR_USER_INPUT, "-solver_direct_dofs %" PetscInt_FMT ": must be >= 0 (0: every 2D run starts iterative)", s->directDofs);
   PetscCheck(s->directIts >= 0, PetscObjectComm((PetscObject)s->dm), PETSC_ERR_USER_INPUT, "-solver_direct_switch %" PetscInt_FMT ": must be >= 0 (0: never a direct solver)", s->directIts);
+  PetscCheck(s->directIts3 >= 0 && s->directDofs3 >= 0, PetscObjectComm((PetscObject)s->dm), PETSC_ERR_USER_INPUT, "-solver_direct_switch_3d %" PetscInt_FMT ", -solver_direct_dofs_3d %" PetscInt_FMT ": must be >= 0 (0: never)", s->directIts3, s->directDofs3);
   PetscCheck(s->pcLag >= 0.0 && s->pcLag < PETSC_INFINITY, PetscObjectComm((PetscObject)s->dm), PETSC_ERR_USER_INPUT, "-solver_pc_lag %.6g: must be >= 0 and finite (0: a new preconditioner with every new Jacobian)", (double)s->pcLag);
   PetscCheck(s->stallIts >= 0, PetscObjectComm((PetscObject)s->dm), PETSC_ERR_USER_INPUT, "-solver_stall_its %" PetscInt_FMT ": must be >= 0 (0: no stagnation test)", s->stallIts);
   PetscCheck(s->jacReuseMax >= 0, PetscObjectComm((PetscObject)s->dm), PETSC_ERR_USER_INPUT, "-solver_jacobian_reuse %" PetscInt_FMT ": must be >= 0 (0: assemble every Newton iteration)", s->jacReuseMax);

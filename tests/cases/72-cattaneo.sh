@@ -257,6 +257,23 @@ f2_chatter_figures() {
   return $rc
 }
 
+# F3 at alpha 1000 with the defaults, 1 rank: GMRES + GAMG needs more than 500 iterations in a
+# normal-step solve, so the run factors from there on (-solver_direct_switch_3d; before: GMRES to
+# its 2000 iterations, 95 Newton iterations, 3 cut-backs, 35 minutes). Converged without a
+# cut-back (56 Newton iterations), the stick zone of alpha 10 (radius -0.44, centre -0.14
+# elements), creep <= 1e-12 (1e-10 h), Q/F = 0.15 to 1e-8. About 2-5 minutes.
+test_cattaneo3d_alpha1000_direct() {
+  local rc=0 name=f3_a1000 out=$CASE_DIR/f3_a1000.txt
+  cm_run "$name" 1 cm3d -options_file input/cattaneo3d.opts -load_steps 5 -bc_2_ramp 0,0.2 -bc_3_ramp 0.2,1 -bc_4_ramp 0.2,1 -contact_alpha 1000 -output_fields false || return 1
+  assert_eq "switched in step 1" "$(sval "$out" direct_solver_from_step) $(grep -c '^linear solver: gmres took [0-9]* iterations in one solve (-solver_direct_switch_3d 500) (3D)' "$out")" "1 1" || rc=1
+  assert_le "newton_iterations" "$(sval "$out" newton_iterations)" 60 || rc=1
+  assert_le "radius_error_elements_$name" "$(cmabs "$name" radius_error_elements)" 1 || rc=1
+  assert_le "centre_error_elements_$name" "$(cmabs "$name" centre_error_elements)" 1 || rc=1
+  assert_le "stick_creep_$name" "$(sval "$out" contact_max_stick_creep)" 1e-12 || rc=1
+  assert_close "force_ratio_$name" "$(awk -v x="$(sval "$out" contact_force_x)" -v z="$(sval "$out" contact_force_z)" 'BEGIN{printf "%.12g", x / z}')" -0.15 1e-8 || rc=1
+  return $rc
+}
+
 # F3 at alpha 1000 without the chatter hold (-contact_chatter_flips 0): the normal step cycles
 # between active sets (doc/friction-benchmarks.md, F3). Without the hold a frictional load step is
 # not solved again with a tighter cap, so the stall message names -contact_step_cap (F3 converges

@@ -111,3 +111,27 @@ test_direct_switch_scope() {
   same_summary "$CASE_DIR/ref.txt" "$CASE_DIR/one.txt" 1e-8 contact_force_y contact_peak_pressure || rc=1
   return $rc
 }
+
+# The 3D switch (-solver_direct_switch_3d, 500 by default; for F3 at alpha 1000, where GMRES +
+# GAMG took up to 2000 iterations per solve: README): F1c (friction_slide3d, GMRES, 13671 dofs)
+# with the threshold at 20 iterations switches to LU in its first step, with one line, and gives
+# F1c's figures, |T| = mu N = 0.003 at 30 degrees (1e-8), on 1 and 2 ranks. Above
+# -solver_direct_dofs_3d it may not switch (the run line names no switch). Frictionless 3D (CG)
+# never switches (direct_switch_scope).
+test_direct_switch_3d() {
+  local rc=0 np out
+  for np in 1 2; do
+    out=$CASE_DIR/np$np.txt
+    spc "$out" "$np" -options_file input/friction_slide3d.opts -solver_direct_switch_3d 20 -output_dir "$CASE_DIR" -output_name "np$np" -output_fields false || return 1
+    assert_eq "converged_np$np" "$(sval "$out" converged) $(sval "$out" cutbacks)" "yes 0" || rc=1
+    assert_eq "from_step_np$np" "$(sval "$out" direct_solver_from_step)" 1 || rc=1
+    assert_eq "message_np$np" "$(grep -c '^linear solver: gmres took [0-9]* iterations in one solve (-solver_direct_switch_3d 20) (3D): from here on a sparse direct solver (LU); -solver_direct_switch_3d 0 keeps the iterative one$' "$out")" 1 || rc=1
+    assert_close "T_x_np$np" "$(sval "$out" contact_tangential_force_x)" -2.598076211353316e-03 1e-8 || rc=1
+    assert_close "T_y_np$np" "$(sval "$out" contact_tangential_force_y)" -1.5e-03 1e-8 || rc=1
+    assert_close "N_np$np" "$(sval "$out" contact_force_z)" 1e-02 1e-8 || rc=1
+  done
+  out=$CASE_DIR/cap.txt
+  spc "$out" 1 -options_file input/friction_slide3d.opts -solver_direct_switch_3d 20 -solver_direct_dofs_3d 10000 -load_steps 1 -snes_max_it 1 -load_max_cutbacks 0 -output_dir "$CASE_DIR" -output_name cap -output_fields false
+  assert_eq "run line above the cap" "$(grep -c '^run: 3D, 13671 dofs.*linear solver gmres/gamg$' "$out")" 1 || rc=1
+  return $rc
+}
