@@ -115,6 +115,7 @@ PETSC_EXTERN PetscErrorCode SPContactRestoreState(SPContact);
 PETSC_EXTERN PetscErrorCode SPContactGetFields(SPContact, Vec, Vec, Vec, Vec, Vec);
 PETSC_EXTERN PetscErrorCode SPContactGetFrictionFields(SPContact, Vec, Vec, Vec, Vec);
 PETSC_EXTERN PetscErrorCode SPContactWritePoints(SPContact, Vec, const char[]);
+PETSC_EXTERN PetscErrorCode SPContactEvaluateFinal(SPContact, Vec);
 PETSC_EXTERN PetscErrorCode SPContactView(SPContact, PetscViewer);
 PETSC_EXTERN PetscErrorCode SPContactDescribe(SPContact, char *, size_t);
 PETSC_EXTERN PetscErrorCode SPContactDestroy(SPContact *);

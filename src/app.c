@@ -237,6 +237,7 @@ PetscErrorCode SPAppSummary(SPApp a)
   PetscCall(PetscViewerASCIIPrintf(v, "displacement_max %.10e\n", (double)umax));
   if (hasErr) PetscCall(PetscViewerASCIIPrintf(v, "l2_error %.10e\n", (double)err)); /* -material_mms only */
   PetscCall(SPContactIsActive(a->contact, &on));
+  if (on && !a->converged && !a->interrupted) PetscCall(SPContactEvaluateFinal(a->contact, a->u));
   if (on) PetscCall(SPContactView(a->contact, v));
   {
     PetscReal mem = PeakMemoryMiB(), memMax;

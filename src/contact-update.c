@@ -485,6 +485,18 @@ PetscErrorCode SPContactComputeStats(SPContact c)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* A run that stopped on a failure: the contact at its restored displacement and state (the last
+   converged step), so the summary's active points, penetration, gap error and stick/slip counts
+   are those of the state it reports, not of the failed iterate the last evaluation saw */
+PetscErrorCode SPContactEvaluateFinal(SPContact c, Vec X)
+{
+  PetscFunctionBeginUser;
+  if (!c->enabled) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(SPContactEvaluate(c, X));
+  PetscCall(Bookkeep(c, 0.0, PETSC_FALSE));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* Figures of the final state (forces recovered): for the summary */
 PetscErrorCode SPContactGetStats(SPContact c, SPContactStats *stats)
 {

@@ -406,7 +406,7 @@ PetscErrorCode SPContactWritePoints(SPContact c, Vec X, const char file[])
     r[5] = pt->geo.gap;
     r[6] = pt->st.sN;
     r[7] = pt->press;
-    r[8] = pt->st.active;
+    r[8] = SPContactPointActive(c, i); /* at X, as the summary counts it (st.active is booked at iteration boundaries only) */
     for (PetscInt d = 0; d < c->dim; ++d) r[9 + d] = pt->ft[d];
     for (PetscInt d = 0; d < c->dim; ++d) r[12 + d] = pt->st.slip[d];
     r[15] = pt->st.status;

@@ -176,6 +176,11 @@ test_restart_failed_status() {
   assert_eq "exit code" "$code" 2 || rc=1
   assert_eq "status" "$(rs_h5 "$CASE_DIR/f.h5.part" | cut -d' ' -f1-2)" "failed 0" || rc=1
   assert_eq "files, all .part" "$(cd "$CASE_DIR" && ls f.* f_* | tr '\n' ' ')" "f.csv.part f.h5.part f.txt f_contact.csv.part " || rc=1
+  # the summary reports the last converged state (here u = 0: nothing penetrates), as its closing
+  # line says, and counts the active points as the contact-points CSV does (before: the active
+  # points, penetration and gap error of the failed iterate, 3.99e-05 deep)
+  assert_eq "summary at u = 0: penetration, gap error" "$(sval "$CASE_DIR/f.txt" contact_max_penetration) $(sval "$CASE_DIR/f.txt" contact_gap_error)" "0.0000000000e+00 0.0000000000e+00" || rc=1
+  assert_eq "active points: summary = CSV" "$(sval "$CASE_DIR/f.txt" contact_active_points)" "$(awk -F, 'NR > 1 {a += $9} END {print a}' "$CASE_DIR/f_contact.csv.part")" || rc=1
   return $rc
 }
 
