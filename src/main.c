@@ -23,11 +23,12 @@ static void SingletonMPI(void)
 }
 
 /* The errors reported in one line: bad input (an unknown type is a misspelt PETSc option such as
-   -ksp_type: every type the code sets itself exists), and a failed write of an output file
-   (output-guard.c) */
+   -ksp_type: every type the code sets itself exists; a factorization that does not exist for the
+   matrix, e.g. -pc_type ilu on several ranks: the code's own factorizations exist), and a failed
+   write of an output file (output-guard.c) */
 static int OneLine(PetscErrorCode n)
 {
-  return n == PETSC_ERR_USER_INPUT || n == PETSC_ERR_USER || n == PETSC_ERR_ARG_OUTOFRANGE || n == PETSC_ERR_ARG_WRONG || n == PETSC_ERR_ARG_UNKNOWN_TYPE || n == PETSC_ERR_FILE_WRITE;
+  return n == PETSC_ERR_USER_INPUT || n == PETSC_ERR_USER || n == PETSC_ERR_ARG_OUTOFRANGE || n == PETSC_ERR_ARG_WRONG || n == PETSC_ERR_ARG_UNKNOWN_TYPE || n == PETSC_ERR_FILE_WRITE || n == PETSC_ERR_MISSING_FACTOR;
 }
 
 /* The first one-line error of this rank (main prints it once it knows which ranks raised it) */
@@ -44,7 +45,7 @@ static PetscErrorCode ErrorHandler(MPI_Comm comm, int line, const char *fun, con
   if (p != PETSC_ERROR_INITIAL) return n;
   if (OneLine(n) && !getenv("SPCONTACT_TRACEBACK")) {
     if (e->set) return n;
-    (void)snprintf(e->message, sizeof(e->message), "%s%s", mess ? mess : "(no message)", n == PETSC_ERR_ARG_UNKNOWN_TYPE ? "; check the option's spelling (-help lists the types)" : "");
+    (void)snprintf(e->message, sizeof(e->message), "%s%s", mess ? mess : "(no message)", n == PETSC_ERR_ARG_UNKNOWN_TYPE ? "; check the option's spelling (-help lists the types)" : (n == PETSC_ERR_MISSING_FACTOR ? " (-pc_type: ILU and ICC factor on 1 rank only; in parallel use -pc_type lu or cholesky with -pc_factor_mat_solver_type mumps, or leave the preconditioner to spcontact)" : ""));
     for (char *c = e->message; *c; ++c)
       if (*c == '\n') *c = ' ';
     e->set = 1;

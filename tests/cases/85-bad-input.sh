@@ -173,6 +173,8 @@ mesh file not a mesh|-mesh_file input/hertz2d.opts
 h5.part taken by a directory (was: two lines and an MPI_Abort banner)|-output_name busy
 surface xmf.part taken by a directory (was: a hang)|-output_name busy2
 YAML options file that does not parse|-options_file_yaml $CASE_DIR/unclosed.yaml
+ILU on 2 ranks (no parallel ILU; was a PETSc error wall)|-pc_type ilu
+PETSc's own LU on 2 ranks|-pc_type lu -pc_factor_mat_solver_type petsc
 CASES
   [ -z "$(ls "$CASE_DIR" | grep -E '\.(h5|xmf|csv)$')" ] || { echo "final-named output written"; rc=1; }
   return $rc
