@@ -182,6 +182,12 @@ PETSC_EXTERN PetscErrorCode SPOptionsCheckValues(MPI_Comm);
 PETSC_EXTERN PetscBool      SPOptionsNameAt(const char[], size_t, const char[]);
 PETSC_EXTERN size_t         SPOptionsNameCopy(const char[], size_t, char[], size_t);
 PETSC_EXTERN PetscErrorCode SPOptionsUnread(const char[]);
+typedef struct {
+  PetscInt n;
+  char   **names, **values;
+} SPOptionsLeft; /* the options unused at SPOptionsLeftBegin (options-unread.c) */
+PETSC_EXTERN PetscErrorCode SPOptionsLeftBegin(SPOptionsLeft *);
+PETSC_EXTERN PetscErrorCode SPOptionsLeftEnd(SPOptionsLeft *);
 PETSC_EXTERN PetscErrorCode SPOptionsIndexedGiven(MPI_Comm, const char[], PetscInt, const char[], PetscBool[]);
 PETSC_EXTERN PetscErrorCode SPOptionsCheckNoGap(MPI_Comm, const char[], PetscInt, PetscInt, const char[], const char[], const char[]);
 

@@ -78,7 +78,8 @@ static PetscErrorCode ObstacleSetFromOptions(MPI_Comm comm, PetscInt i, PetscInt
     PetscCall(PetscOptionsRealArray("-normal", "Plane normal (towards the body) or cylinder axis (3D; a cylinder in 2D is a circle)", "SPContactSetFromOptions", ob->normal, &n, &set));
     PetscCall(CheckVector(comm, prefix, "normal", dim, set, n, ob->normal));
   }
-  PetscCall(PetscOptionsReal("-radius", "Sphere/cylinder radius > 0", "SPContactSetFromOptions", ob->radius, &ob->radius, NULL));
+  if (type != SP_OBSTACLE_PLANE || PetscOptionsObject->printhelp) /* a plane has none: reported unused */
+    PetscCall(PetscOptionsReal("-radius", "Sphere/cylinder radius > 0", "SPContactSetFromOptions", ob->radius, &ob->radius, NULL));
   n = 3;
   PetscCall(PetscOptionsRealArray("-motion", "Rigid displacement of the obstacle at load factor 1", "SPContactSetFromOptions", ob->motion, &n, &set));
   PetscCall(CheckVector(comm, prefix, "motion", dim, set, n, ob->motion));
@@ -140,9 +141,15 @@ static PetscErrorCode MethodSetFromOptions(PetscOptionItems *PetscOptionsObject,
   c->params.accelDepth = 5;
   for (PetscInt k = 0; k < n; ++k) {
     SPMethodParams other = c->params;
-    other.maxOption      = NULL;
-    if (SPMethodTable[k]->setFromOptions) PetscCall(SPMethodTable[k]->setFromOptions(PetscOptionsObject, k == pick ? &c->params : &other));
-    if (k != pick && other.maxOption) PetscCall(SPOptionsUnread(other.maxOption)); /* another method's: reported if given (options-unread.c) */
+    SPOptionsLeft  left;
+    if (!SPMethodTable[k]->setFromOptions) continue;
+    if (k == pick) {
+      PetscCall(SPMethodTable[k]->setFromOptions(PetscOptionsObject, &c->params));
+      continue;
+    }
+    PetscCall(SPOptionsLeftBegin(&left)); /* another method's options: reported if given (options-unread.c) */
+    PetscCall(SPMethodTable[k]->setFromOptions(PetscOptionsObject, &other));
+    PetscCall(SPOptionsLeftEnd(&left));
   }
   PetscCall(AccelSetFromOptions(PetscOptionsObject, c));
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -25,3 +25,27 @@ PetscErrorCode SPOptionsUnread(const char key[])
   PetscCall(PetscFree(all));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
+
+/* Options read between SPOptionsLeftBegin and SPOptionsLeftEnd that were unused before (read only
+   there: e.g. the options of a method the run did not choose, read so that -help lists them) */
+PetscErrorCode SPOptionsLeftBegin(SPOptionsLeft *l)
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsLeftGet(NULL, &l->n, &l->names, &l->values));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode SPOptionsLeftEnd(SPOptionsLeft *l)
+{
+  char name[256];
+
+  PetscFunctionBeginUser;
+  for (PetscInt k = 0; k < l->n; ++k) {
+    PetscBool used;
+    PetscCall(PetscOptionsUsed(NULL, l->names[k], &used)); /* PETSc's stored name: without the dash */
+    PetscCall(PetscSNPrintf(name, sizeof(name), "-%s", l->names[k]));
+    if (used) PetscCall(SPOptionsUnread(name));
+  }
+  PetscCall(PetscOptionsLeftRestore(NULL, &l->n, &l->names, &l->values));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}

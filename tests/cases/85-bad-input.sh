@@ -208,16 +208,17 @@ test_bad_input_unused_option() {
     grep '^spcontact: warning: option -contact_obstacle_0_normal was not used' "$CASE_DIR/$kind.txt" || { echo "no report of a 2D $kind's normal"; rc=1; }
   done
   # options read for -help (or before the run's kind is known) that this run does not use are
-  # reported too (options-unread.c): alm's budget with shifted, Anderson's depth without Anderson,
-  # friction options without friction, the pairs' exchange without pairs; contact options on a
+  # reported too (options-unread.c): another method's options (alm's budget, the regression's
+  # history) with shifted, Anderson's depth without Anderson, friction options without friction,
+  # the pairs' exchange without pairs, a plane's radius; contact options on a
   # run without contact. Used, they are not reported: alm_max with alm, the depth with Anderson,
   # friction_alpha with friction.
   local opt
-  spc "$CASE_DIR/other.txt" 1 -options_file input/hertz2d.opts -contact_alm_max 5 -contact_shift_accel_depth 3 -contact_friction_alpha 10 -contact_friction_creep_rtol 1e-3 -contact_pair_exchange_all -output_dir "$CASE_DIR" -output_name other -output_fields false || rc=1
-  for opt in contact_alm_max contact_shift_accel_depth contact_friction_alpha contact_friction_creep_rtol contact_pair_exchange_all; do
+  spc "$CASE_DIR/other.txt" 1 -options_file input/hertz2d.opts -contact_alm_max 5 -contact_regression_m 5 -contact_shift_accel_depth 3 -contact_friction_alpha 10 -contact_friction_creep_rtol 1e-3 -contact_pair_exchange_all -contact_obstacle_0_radius 2 -output_dir "$CASE_DIR" -output_name other -output_fields false || rc=1
+  for opt in contact_alm_max contact_regression_m contact_shift_accel_depth contact_friction_alpha contact_friction_creep_rtol contact_pair_exchange_all contact_obstacle_0_radius; do
     grep "^spcontact: warning: option -$opt was not used" "$CASE_DIR/other.txt" || { echo "no report of -$opt"; rc=1; }
   done
-  assert_eq warnings_other_kind "$(grep -c 'warning' "$CASE_DIR/other.txt")" 5 || rc=1
+  assert_eq warnings_other_kind "$(grep -c 'warning' "$CASE_DIR/other.txt")" 7 || rc=1
   spc "$CASE_DIR/nocontact.txt" 1 -options_file input/elastic2d.opts -contact_alpha 10 -contact_method alm -output_dir "$CASE_DIR" -output_name nocontact -output_fields false || rc=1
   assert_eq warnings_contact_without_contact "$(grep -c '^spcontact: warning: option -contact_\(alpha\|method\) was not used' "$CASE_DIR/nocontact.txt")" 2 || rc=1
   spc "$CASE_DIR/used.txt" 1 -options_file input/friction_block2d.opts -contact_method alm -contact_alm_max 40 -contact_friction_alpha 20 -contact_shift_accel anderson -contact_shift_accel_depth 3 -output_dir "$CASE_DIR" -output_name used -output_fields false || rc=1
