@@ -26,6 +26,8 @@ static PetscErrorCode RunLine(SPApp);
 
 static PetscErrorCode LoadingSetFromOptions(SPApp a)
 {
+  PetscBool floorSet;
+
   PetscFunctionBeginUser;
   PetscOptionsBegin(a->comm, NULL, "Loading options", "spcontact");
   PetscCall(PetscOptionsInt("-load_steps", "Number of load steps (load factor k/N scales loads, Dirichlet values, obstacle motion)", "SPAppSetUp", a->loadSteps, &a->loadSteps, NULL));
@@ -34,12 +36,14 @@ static PetscErrorCode LoadingSetFromOptions(SPApp a)
   PetscCall(PetscOptionsInt("-debug_error_on_rank", "Testing: this rank alone raises a one-line error before the first load step, as an internal error would (-1: never)", "SPAppSetUp", a->debugErrorRank, &a->debugErrorRank, NULL));
   PetscCall(PetscOptionsInt("-load_max_cutbacks", "Budget of the run: total times a failing load increment may be halved before the run stops", "SPAppSetUp", a->maxCutbacks, &a->maxCutbacks, NULL));
   PetscCall(PetscOptionsInt("-load_grow_after", "After a cut-back, double the increment (up to 1/load_steps) after this many converged steps in a row (0: never)", "SPAppSetUp", a->growAfter, &a->growAfter, NULL));
-  PetscCall(PetscOptionsReal("-load_min_increment", "Floor of the cut-back: the run stops rather than halve the load-factor increment below this", "SPAppSetUp", a->minIncrement, &a->minIncrement, NULL));
+  PetscCall(PetscOptionsReal("-load_min_increment", "Floor of the cut-back: the run stops rather than halve the load-factor increment below this", "SPAppSetUp", a->minIncrement, &a->minIncrement, &floorSet));
   PetscCall(PetscOptionsReal("-max_wall_time", "Seconds: no new load step starts after this wall time; the run stops keeping its converged steps (0: no limit)", "SPAppSetUp", a->maxWallTime, &a->maxWallTime, NULL));
   PetscCall(PetscOptionsBool("-quiet", "No progress lines on stdout: neither the run line nor the lines per load step and per -progress_interval (the summary is still printed)", "SPAppSetUp", a->progress.quiet, &a->progress.quiet, NULL));
   PetscCall(PetscOptionsReal("-progress_interval", "Seconds: within a load step, a progress line per Newton iteration at most this often (0: every Newton iteration)", "SPAppSetUp", a->progress.interval, &a->progress.interval, NULL));
   PetscOptionsEnd();
   PetscCheck(a->minIncrement > 0.0 && a->minIncrement <= 1.0, a->comm, PETSC_ERR_USER_INPUT, "-load_min_increment %.6g: must be in (0, 1] (a load-factor increment)", (double)a->minIncrement);
+  PetscCheck(!floorSet || a->minIncrement < 1.0 / a->loadSteps || a->loadSteps < 1, a->comm, PETSC_ERR_USER_INPUT, "-load_min_increment %.6g: not below the load step 1/%" PetscInt_FMT " (no cut-back could happen); give a smaller floor, or -load_max_cutbacks 0 for none", (double)a->minIncrement, a->loadSteps);
+  PetscCheck(a->signals.debugStep >= 0, a->comm, PETSC_ERR_USER_INPUT, "-debug_interrupt_after_step %" PetscInt_FMT ": must be >= 0 (0: never)", a->signals.debugStep);
   PetscCheck(a->progress.interval >= 0.0 && !PetscIsInfOrNanReal(a->progress.interval), a->comm, PETSC_ERR_USER_INPUT, "-progress_interval %.6g: must be a number of seconds >= 0 (0: a line every Newton iteration; -quiet: none)", (double)a->progress.interval);
   PetscCheck(a->maxWallTime >= 0.0, a->comm, PETSC_ERR_USER_INPUT, "-max_wall_time %.6g: must be >= 0 seconds (0: no limit)", (double)a->maxWallTime);
   PetscCheck(a->loadSteps >= 1, a->comm, PETSC_ERR_USER_INPUT, "-load_steps %" PetscInt_FMT ": need at least one load step", a->loadSteps);

@@ -191,7 +191,7 @@ int main(int argc, char **argv)
     PetscCall(PetscFinalize());
     return 128 + interrupted;
   }
-  if (!converged) PetscCall(PetscPrintf(PETSC_COMM_WORLD, "spcontact: the solve did not converge; results above are for the last converged load step only\n"));
+  if (!converged) PetscCall(PetscPrintf(PETSC_COMM_WORLD, "spcontact: the run stopped before load factor 1 (the 'stopping:' line above says why); results above are for the last converged load step only\n"));
   PetscCall(PetscPopErrorHandler());
   PetscCall(PetscFinalize());
   return converged ? 0 : 2;

@@ -97,6 +97,8 @@ gap rtol negative|input/hertz2d.opts|-contact_gap_rtol -1
 gap tol zero|input/hertz2d.opts|-contact_gap_tol 0
 cut-back budget negative|input/hertz2d.opts|-load_max_cutbacks -1
 minimum increment above 1|input/hertz2d.opts|-load_min_increment 2
+minimum increment not below the load step (no cut-back possible)|input/hertz2d.opts|-load_steps 2 -load_min_increment 0.6
+test interrupt step negative|input/hertz2d.opts|-debug_interrupt_after_step -1
 wall time negative|input/hertz2d.opts|-max_wall_time -5
 progress interval negative|input/hertz2d.opts|-progress_interval -1
 stall iterations negative|input/hertz2d.opts|-solver_stall_its -1
