@@ -102,7 +102,7 @@ PETSC_EXTERN PetscBool      SPBCProportional(PetscInt, const SPBC[], const Petsc
    is in loading.c). Nothing outside those files names a method. */
 typedef enum { SP_UPDATE_NONE, SP_UPDATE_NEWTON, SP_UPDATE_SOLVE } SPUpdateTiming;
 /* acceleration of the in-Newton update over all active points (contact-accel.c) */
-typedef enum { SP_ACCEL_NONE, SP_ACCEL_ANDERSON } SPShiftAccelType;
+typedef enum { SP_ACCEL_NONE, SP_ACCEL_ANDERSON, SP_ACCEL_SCHUR } SPShiftAccelType;
 PETSC_EXTERN const char *const SPShiftAccelTypes[];
 typedef struct {
   PetscInt history;    /* (s, g) pairs kept per point for the update rule (>= 1) */
@@ -145,6 +145,7 @@ typedef struct {
 /* One master facet as every rank sees it after the exchange. The vertex order makes the facet
    normal point out of the master body (see kernels/contact-pair.h). */
 #define SP_FACET_MAXV 4
+#define SP_ELEM_MAXD (3 * (1 + SP_FACET_MAXV)) /* dofs of one contact element: slave vertex and master facet */
 typedef struct {
   PetscInt  pair, nv, gid;               /* gid: global facet number (owner rank's offset + index) */
   PetscInt  sid;                         /* the facet's serial mesh point number (rank-count free) */
@@ -282,6 +283,10 @@ struct _n_SPContact {
   SPShiftAccel    accelT;    /* the same for the tangential shifts of stuck points (2 slots per point) */
   PetscReal      *accTS, *accTG, *accTNew;
   PetscBool      *accTIn;
+  PetscInt        schurSteps, schurSolves; /* -contact_shift_accel schur: updates, back-substitutions (contact-schur.c) */
+  PetscBool       schurSaid;               /* it said once that it has no factorization to use */
+  PetscErrorCode (*jsolve)(void *, Vec, Vec, PetscBool *); /* solve with the last Newton step's Jacobian (NULL vectors: ask whether it can) */
+  void           *jctx;
   PetscInt       *known;     /* per point: (facet, anchor facet) pairs already in the Jacobian pattern */
   /* evaluation cache: the state the geometry was last evaluated at */
   Vec             evalX;       /* copy of the displacement of the last evaluation (NULL: none yet) */
@@ -319,6 +324,8 @@ struct _n_SPContact {
 
 /* helpers shared by the contact files */
 PETSC_EXTERN PetscErrorCode SPContactPredictApply(SPContact);
+#define SP_SCHUR_MAX_IT 30 /* GMRES products (back-substitutions) per Schur shift update */
+PETSC_EXTERN PetscErrorCode SPContactSchurUpdate(SPContact, PetscReal *);
 PETSC_EXTERN void           SPFrictionClipShift(SPContact, PetscInt);
 PETSC_EXTERN const SPNormalLaw SPLawShiftedPenalty;
 PETSC_EXTERN PetscReal      SPShiftIncrement(PetscInt, const PetscReal[], const PetscReal[]);

@@ -99,6 +99,8 @@ PETSC_EXTERN PetscErrorCode SPContactHasFriction(SPContact, PetscBool *);
 PETSC_EXTERN PetscErrorCode SPContactHasPairs(SPContact, PetscBool *);
 PETSC_EXTERN PetscErrorCode SPContactShiftsInNewton(SPContact, PetscBool *);
 PETSC_EXTERN PetscErrorCode SPContactUpdatesShifts(SPContact, PetscBool *);
+PETSC_EXTERN PetscErrorCode SPContactGetAccelSteps(SPContact, PetscInt *);
+PETSC_EXTERN void           SPContactSetJacobianSolve(SPContact, PetscErrorCode (*)(void *, Vec, Vec, PetscBool *), void *);
 PETSC_EXTERN PetscErrorCode SPContactGetActiveVersion(SPContact, PetscInt *);
 PETSC_EXTERN PetscBool      SPContactTangentFixed(SPContact);
 PETSC_EXTERN PetscErrorCode SPContactGetActiveChanges(SPContact, PetscInt *, PetscInt *);

@@ -16,7 +16,7 @@
    column left the plain update stands. The caller clips s <= 0 afterwards. */
 #include <spcontact-impl.h>
 
-const char *const SPShiftAccelTypes[] = {"none", "anderson", "SPShiftAccelType", "SP_ACCEL_", NULL};
+const char *const SPShiftAccelTypes[] = {"none", "anderson", "schur", "SPShiftAccelType", "SP_ACCEL_", NULL};
 
 #define SP_ACCEL_DROP 1e-5 /* least sine of the angle between a column and the newer ones */
 

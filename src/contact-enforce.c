@@ -54,7 +54,6 @@ PetscBool SPContactPointActive(SPContact c, PetscInt i)
   return k > 0.0 ? PETSC_TRUE : PETSC_FALSE;
 }
 
-#define SP_ELEM_MAXD (3 * (1 + SP_FACET_MAXV))
 
 /* Local vector whose LocalToGlobal(ADD) gives the global vector G: G scattered to local, entries
    of points owned by other ranks zeroed (constrained dofs stay zero) */

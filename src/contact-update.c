@@ -180,6 +180,7 @@ static PetscErrorCode Accelerate(SPContact c, PetscReal *maxDs)
   PetscBool used = PETSC_FALSE;
 
   PetscFunctionBeginUser;
+  if (c->params.accel == SP_ACCEL_SCHUR) PetscCall(SPContactSchurUpdate(c, maxDs));
   if (!c->accel) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(SPShiftAccelUpdate(c->accel, c->accIn, c->accS, c->accG, c->accNew, &used));
   if (!used) PetscFunctionReturn(PETSC_SUCCESS);
@@ -194,7 +195,7 @@ static PetscErrorCode Accelerate(SPContact c, PetscReal *maxDs)
 /* Point i's shift went from s to its rule's value (rule: the rule applied): the accelerator's record */
 static void Record(SPContact c, PetscInt i, PetscReal s, PetscBool rule)
 {
-  if (!c->accel) return;
+  if (c->params.accel == SP_ACCEL_NONE) return;
   c->accS[i] = s, c->accG[i] = c->pt[i].geo.gap, c->accIn[i] = rule, c->accNew[i] = c->pt[i].st.sN;
 }
 
@@ -648,6 +649,22 @@ PetscErrorCode SPContactShiftsInNewton(SPContact c, PetscBool *on)
   PetscFunctionBeginUser;
   *on = c && c->enabled && c->method->timing == SP_UPDATE_NEWTON ? PETSC_TRUE : PETSC_FALSE;
   PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Accelerated shift updates of the run (a restarted run's included) */
+PetscErrorCode SPContactGetAccelSteps(SPContact c, PetscInt *steps)
+{
+  PetscFunctionBeginUser;
+  PetscCall(SPShiftAccelGetSteps(c->accel, steps));
+  *steps += c->schurSteps + c->accelStepsBefore;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The solve with the last Newton step's Jacobian that -contact_shift_accel schur back-substitutes
+   with (the solver's; NULL vectors ask whether it can: a factorization) */
+void SPContactSetJacobianSolve(SPContact c, PetscErrorCode (*solve)(void *, Vec, Vec, PetscBool *), void *ctx)
+{
+  c->jsolve = solve, c->jctx = ctx;
 }
 
 /* Whether the method updates the shifts at all (shifted, alm; not penalty) */

@@ -108,10 +108,11 @@ static PetscErrorCode AccelSetFromOptions(PetscOptionItems *PetscOptionsObject, 
 
   PetscFunctionBeginUser;
   type = plain && c->twoPass ? SP_ACCEL_ANDERSON : SP_ACCEL_NONE;
-  PetscCall(PetscOptionsEList("-contact_shift_accel", "shifted and alm: acceleration of the shift update s <- s + g (shifted: at each Newton-iteration boundary; alm: after each converged solve) on a settled set of active points: none or anderson (Anderson mixing of the last m updates over all active points; plain update when ill-conditioned or when the gap residual grew). Default: none, anderson with -contact_two_pass", "SPContactSetFromOptions", SPShiftAccelTypes, 2, SPShiftAccelTypes[type], &type, &set));
+  PetscCall(PetscOptionsEList("-contact_shift_accel", "shifted and alm: acceleration of the shift update s <- s + g (shifted: at each Newton-iteration boundary; alm: after each converged solve) on a settled set of active points: none, anderson (Anderson mixing of the last m updates over all active points; plain update when ill-conditioned or when the gap residual grew) or schur (the update that zeroes the linearised gaps of the next step: GMRES on the contact rows, each product one back-substitution with the Newton step's factorization; with an iterative linear solver the plain update). Default: none, anderson with -contact_two_pass", "SPContactSetFromOptions", SPShiftAccelTypes, 3, SPShiftAccelTypes[type], &type, &set));
   PetscCall(PetscOptionsInt("-contact_shift_accel_depth", "With -contact_shift_accel anderson: number m of past updates combined (1..50)", "SPContactSetFromOptions", c->params.accelDepth, &c->params.accelDepth, NULL));
   PetscCheck(c->params.accelDepth >= 1 && c->params.accelDepth <= 50, comm, PETSC_ERR_USER_INPUT, "-contact_shift_accel_depth %" PetscInt_FMT ": give 1..50 past updates", c->params.accelDepth);
   PetscCheck(!set || type == SP_ACCEL_NONE || plain, comm, PETSC_ERR_USER_INPUT, "-contact_shift_accel %s: -contact_method %s has no plain shift update to accelerate; use shifted or alm", SPShiftAccelTypes[type], c->method->name);
+  PetscCheck(type != SP_ACCEL_SCHUR || !c->twoPass, comm, PETSC_ERR_USER_INPUT, "-contact_shift_accel schur with -contact_two_pass: the two passes constrain each gap twice, so the shifts' Schur complement is singular; use anderson (the two-pass default)");
   c->params.accel = (SPShiftAccelType)type;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -482,8 +483,9 @@ static PetscErrorCode ViewSetUp(SPContact c, PetscViewer v)
     PetscCall(MatGetInfo(c->Jref, MAT_GLOBAL_SUM, &info));
     PetscCall(PetscViewerASCIIPrintf(v, "contact_jacobian_mallocs %g\n", (double)info.mallocs));
   }
-  PetscCall(SPShiftAccelGetSteps(c->accel, &accelSteps));
-  PetscCall(PetscViewerASCIIPrintf(v, "contact_shift_accel %s\ncontact_shift_accel_steps %" PetscInt_FMT "\n", SPShiftAccelTypes[c->params.accel], accelSteps + c->accelStepsBefore));
+  PetscCall(SPContactGetAccelSteps(c, &accelSteps));
+  PetscCall(PetscViewerASCIIPrintf(v, "contact_shift_accel %s\ncontact_shift_accel_steps %" PetscInt_FMT "\n", SPShiftAccelTypes[c->params.accel], accelSteps));
+  if (c->params.accel == SP_ACCEL_SCHUR) PetscCall(PetscViewerASCIIPrintf(v, "contact_shift_accel_solves %" PetscInt_FMT "\n", c->schurSolves));
   PetscCall(PetscViewerASCIIPrintf(v, "contact_alpha %g\n", c->penalty > 0.0 ? 0.0 : (double)c->alpha));
   PetscCall(PetscViewerASCIIPrintf(v, "contact_eps_min %.10e\ncontact_eps_max %.10e\n", (double)gmin, (double)gmax));
   PetscCall(PetscViewerASCIIPrintf(v, "contact_length_scale %.10e\ncontact_gap_rtol %g\ncontact_gap_tol %.6e\n", (double)c->lengthScale, c->gapTolSet ? 0.0 : (double)c->gapRtol, (double)c->gapTol));

@@ -34,17 +34,19 @@ static PetscErrorCode PlainVec(MPI_Comm comm, PetscInt n, PetscInt bs, const cha
 }
 
 /* The counters record, one direction or the other */
-static void Counters(PetscBool pack, SPApp a, PetscReal *inc, PetscReal b[])
+static PetscErrorCode Counters(PetscBool pack, SPApp a, PetscReal *inc, PetscReal b[])
 {
   SPSolver  s = a->solver;
   SPContact c = a->contact;
-  PetscInt  accelSteps = c->accelStepsBefore;
-  if (pack) (void)SPShiftAccelGetSteps(c->accel, &accelSteps), accelSteps += c->accelStepsBefore; /* cannot fail */
+  PetscInt  accelSteps;
+
+  PetscFunctionBeginUser;
+  PetscCall(SPContactGetAccelSteps(c, &accelSteps));
   PetscReal v[NCOUNT] = {a->loadReached, *inc, (PetscReal)a->stepsDone, (PetscReal)a->cutbacks, (PetscReal)s->newtonTotal, (PetscReal)s->linearTotal, (PetscReal)s->funcTotal, (PetscReal)c->evaluations, (PetscReal)c->stepLimits, (PetscReal)c->shiftUpdates, (PetscReal)c->exchanges, (PetscReal)c->received, (PetscReal)c->rebuilds, (PetscReal)c->stats.augmentations, (PetscReal)c->centreSet, c->centre[0], c->centre[1], c->centre[2], (PetscReal)c->exchangeTime, s->fscale, (PetscReal)a->streak, (PetscReal)c->capRetries, (PetscReal)s->reorthogonalise, a->loadBefore, (PetscReal)c->havePrev, (PetscReal)c->predictions, (PetscReal)c->jumpWaits, (PetscReal)s->directStep, (PetscReal)c->chatterHolds, (PetscReal)s->jacReuses, (PetscReal)s->pcKeeps, (PetscReal)s->refinedSteps, (PetscReal)s->refinedLinear, (PetscReal)s->accepted, (PetscReal)accelSteps};
 
   if (pack) {
     for (PetscInt k = 0; k < NCOUNT; ++k) b[k] = v[k];
-    return;
+    PetscFunctionReturn(PETSC_SUCCESS);
   }
   a->loadReached = b[0], *inc = b[1], a->stepsDone = (PetscInt)b[2], a->cutbacks = (PetscInt)b[3];
   s->newtonTotal = (PetscInt)b[4], s->linearTotal = (PetscInt)b[5], s->funcTotal = (PetscInt)b[6];
@@ -69,6 +71,7 @@ static void Counters(PetscBool pack, SPApp a, PetscReal *inc, PetscReal b[])
   s->refinedLinear   = (PetscInt)b[32];
   s->accepted        = (PetscInt)b[33];
   c->accelStepsBefore = (PetscInt)b[34]; /* the accelerated updates before the restart */
+  PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 /* The run's identity, as attributes of /restart: written with the first step, compared on restart */
@@ -218,7 +221,7 @@ static PetscErrorCode WriteStep(SPApp a, PetscReal inc)
   PetscCall(SPNaturalDestroy(&pts));
   PetscCall(PlainVec(a->comm, 1, NCOUNT, "counters", &v));
   PetscCall(VecGetArray(v, &x));
-  Counters(PETSC_TRUE, a, &inc, x);
+  PetscCall(Counters(PETSC_TRUE, a, &inc, x));
   PetscCall(VecRestoreArray(v, &x));
   PetscCall(VecView(v, o->h5));
   PetscCall(VecDestroy(&v));
@@ -359,7 +362,7 @@ static PetscErrorCode LoadCounters(SPApp a, PetscViewer h5, PetscInt ranks, Pets
     }
   }
   PetscCall(VecRestoreArray(all, &x));
-  Counters(PETSC_FALSE, a, inc, b);
+  PetscCall(Counters(PETSC_FALSE, a, inc, b));
   if (a->solver->reorthogonalise) PetscCall(SPSolverReorthogonalise(a->solver));
   PetscCall(SPSolverResumeDirect(a->solver, a->solver->directStep));
   PetscCall(VecScatterDestroy(&sc));

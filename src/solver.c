@@ -291,6 +291,27 @@ static PetscErrorCode RefineStep(SPSolver s, Vec X, Vec Y, Vec W, PetscBool *ref
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* x = J^-1 b with the factorization of the last Newton step (-contact_shift_accel schur; any
+   Krylov method around it converges in one iteration); NULL vectors ask whether the
+   preconditioner is one (*ok) */
+static PetscErrorCode SolveJacobian(void *ctx, Vec b, Vec x, PetscBool *ok)
+{
+  SPSolver           s = (SPSolver)ctx;
+  KSP                ksp;
+  PC                 pc;
+  KSPConvergedReason reason;
+
+  PetscFunctionBeginUser;
+  PetscCall(SNESGetKSP(s->snes, &ksp));
+  PetscCall(KSPGetPC(ksp, &pc));
+  PetscCall(PetscObjectTypeCompareAny((PetscObject)pc, ok, PCLU, PCCHOLESKY, ""));
+  if (!*ok || !b) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(KSPSolve(ksp, b, x));
+  PetscCall(KSPGetConvergedReason(ksp, &reason));
+  *ok = reason > 0 ? PETSC_TRUE : PETSC_FALSE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* The Newton-iteration boundary: W is the accepted new iterate. */
 static PetscErrorCode ShiftHook(SNESLineSearch ls, Vec X, Vec Y, Vec W, PetscBool *changedY, PetscBool *changedW, void *ctx)
 {
@@ -865,6 +886,7 @@ PetscErrorCode SPSolverSetFromOptions(SPSolver s)
   if (on) {
     PetscCall(SNESGetLineSearch(s->snes, &ls));
     PetscCall(SNESLineSearchSetPostCheck(ls, ShiftHook, s));
+    SPContactSetJacobianSolve(s->contact, SolveJacobian, s);
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
