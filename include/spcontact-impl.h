@@ -325,7 +325,7 @@ struct _n_SPContact {
 /* helpers shared by the contact files */
 PETSC_EXTERN PetscErrorCode SPContactPredictApply(SPContact);
 #define SP_SCHUR_MAX_IT 30 /* GMRES products (back-substitutions) per Schur shift update */
-PETSC_EXTERN PetscErrorCode SPContactSchurUpdate(SPContact, PetscReal *);
+PETSC_EXTERN PetscErrorCode SPContactSchurUpdate(SPContact, PetscBool, PetscBool, PetscReal *, PetscReal *);
 PETSC_EXTERN void           SPFrictionClipShift(SPContact, PetscInt);
 PETSC_EXTERN const SPNormalLaw SPLawShiftedPenalty;
 PETSC_EXTERN PetscReal      SPShiftIncrement(PetscInt, const PetscReal[], const PetscReal[]);

@@ -459,7 +459,7 @@ PetscErrorCode SPFrictionUpdate(SPContact c, PetscBool mayHold, PetscReal *maxDs
     SPContactPoint *pt = &c->pt[i];
     PetscReal       y[2], t[2], old[2] = {pt->st.sT[0], pt->st.sT[1]}, lam, ds;
     PetscBool       stick = PETSC_TRUE, rule = PETSC_FALSE, activeNow = SPContactPointActive(c, i);
-    if (c->accelT) c->accTIn[2 * i] = c->accTIn[2 * i + 1] = PETSC_FALSE;
+    if (c->accTIn) c->accTIn[2 * i] = c->accTIn[2 * i + 1] = PETSC_FALSE;
     if (pt->geo.mu <= 0.0) continue;
     if (activeNow && pt->st.active) {
       SPFrictionTraction(c, i, y, t, &stick);
@@ -471,12 +471,12 @@ PetscErrorCode SPFrictionUpdate(SPContact c, PetscBool mayHold, PetscReal *maxDs
         for (PetscInt a = 0; a < nt; ++a) pt->st.sT[a] = -t[a] / pt->epsT + (stick ? SPDot(c->dim, pt->st.creep, pt->st.T[a]) : 0.0);
       rule = stick && creepHolds ? PETSC_FALSE : PETSC_TRUE;
     } else if (!activeNow) pt->st.sT[0] = pt->st.sT[1] = 0.0;
-    if (c->accelT && rule && stick) { /* the clip after the accelerated step */
+    if (c->accTIn && rule && stick) { /* the accelerator's record (Anderson: the clip after its step) */
       for (PetscInt a = 0; a < nt; ++a) {
         const PetscInt k = 2 * i + a;
         c->accTIn[k] = PETSC_TRUE, c->accTS[k] = old[a], c->accTG[k] = pt->st.sT[a] - old[a], c->accTNew[k] = pt->st.sT[a];
       }
-      continue;
+      if (c->accelT) continue;
     }
     lam  = ClipToCone(c, i);
     ds   = ShiftChange(c, i, old);

@@ -1,49 +1,93 @@
 /* -contact_shift_accel schur: the shift update that zeroes the linearised gaps of the next step.
-   With a settled active set the Newton step from shifts s + d changes the gap of active point i by
-   -(M d)_i - (B J^-1 R)_i, where J is the step's Jacobian, B the gap rows (B du: the gap changes)
-   and M = B J^-1 D with D the shift's forces (column i: A_i eps_i N_i, the residual's derivative
-   in s_i). The plain rule takes d = g (M = I, the rigid-point limit); this one solves M d = g by
-   GMRES, each product one back-substitution with the factorization the Newton step used, and so
-   removes the contraction k/(k + eps) of the plain update (doc/performance.md: its spectrum lies
-   in [1 - rho, 1], GMRES needs a handful of products). It needs a factorization: with an iterative
+   With a settled active set the Newton step from shifts s + d changes the gap of an updated point
+   by -(M d) - (R J^-1 F), where J is the step's Jacobian, R the gap rows (R du: the gap changes)
+   and M = R J^-1 C with C the shift's forces (column of a normal shift: A eps N, plus
+   A eps mu B_T^T m at a slipping point, whose Coulomb traction mu p m follows p; column of a stuck
+   point's tangential shift: A eps_T B_T^T e_a, its row B_T e_a, its "gap" Dg_T + c_T). The plain
+   rule takes d = gap (M = I, the rigid-point limit); this one solves M d = gap by GMRES, each
+   product one back-substitution with the factorization the Newton step used, and so removes the
+   contraction k/(k + eps) of the plain update (doc/performance.md: its spectrum lies in
+   [1 - rho, 1], GMRES needs a handful of products). It needs a factorization: with an iterative
    linear solver every product would be a whole Krylov solve, and the update stays the plain one.
    The Newton step's residual term is dropped: at the boundary the new iterate W = X - J^-1 F(X)
-   has R(W) = 0 up to the nonlinear remainder, which the next Newton step removes. */
+   has F(W) = 0 up to the nonlinear remainder, which the next Newton step removes. */
 #include <spcontact-impl.h>
 
 typedef struct {
-  SPContact   c;
-  PetscInt    nrow, ndof;  /* rows (points the rule updated), their dofs (with repeats) */
-  PetscInt   *row, *off;   /* per row: point index, offset into dof/N */
-  PetscInt   *dof;         /* global dofs (constrained ones dropped) */
-  PetscReal  *N, *D;       /* N = dg/du per dof; D = A eps per row */
-  PetscBool  *in;          /* per point: a row */
-  Vec         F, Z, zloc;  /* global force and solution, gathered solution values */
-  VecScatter  gather;
+  SPContact  c;
+  PetscInt   slots;       /* per point in the shift vector: the normal shift, then dim - 1 tangential */
+  PetscBool  tangential;  /* the stuck points' tangential shifts are rows */
+  PetscInt   nrow, ndof;  /* rows (updated shifts), their dofs (with repeats) */
+  PetscInt  *row, *off;   /* per row: slot in the shift vector, offset into dof/R/C */
+  PetscInt  *dof;         /* global dofs (constrained ones dropped) */
+  PetscReal *R, *C, *b;   /* row (gap change per dof), column (force per unit shift), and per row its gap */
+  Vec        F, Z, zloc;  /* global force and solution, gathered solution values */
+  VecScatter gather;
 } SchurCtx;
 
-static PetscErrorCode Rows(SchurCtx *x)
+/* Element of point i: dofs, area, N = dg/du and (friction, anchored) B_T = dDg_T/du; *nd = 0: none */
+static PetscErrorCode Element(SPContact c, PetscInt i, PetscInt *nd, PetscInt dofs[], PetscReal *A, PetscReal N[], PetscReal BT[], PetscBool *tangent)
 {
-  SPContact c = x->c;
+  PetscFunctionBeginUser;
+  *tangent = PETSC_FALSE;
+  if (c->friction) PetscCall(SPFrictionElementDofs(c, i, nd, dofs, N, BT, A));
+  if (c->friction && *nd) *tangent = PETSC_TRUE;
+  else PetscCall(SPContactPointElement(c, i, nd, dofs, A, N, NULL));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* One row: R and C over the element's free dofs; dropped when no free dof moves its gap */
+static void AddRow(SchurCtx *x, PetscInt slot, PetscReal gap, PetscInt nd, const PetscInt dofs[], const PetscReal R[], const PetscReal C[])
+{
+  const PetscInt start = x->ndof;
+  for (PetscInt k = 0; k < nd; ++k)
+    if (dofs[k] >= 0 && (R[k] != 0.0 || C[k] != 0.0)) x->dof[x->ndof] = dofs[k], x->R[x->ndof] = R[k], x->C[x->ndof++] = C[k];
+  if (x->ndof == start) return;
+  x->row[x->nrow] = slot, x->off[x->nrow] = start, x->b[x->nrow++] = gap;
+}
+
+/* The rows of point i: its normal shift if the rule updated it (normal), its tangential ones if
+   it is stuck and the rule updated them (tangential) */
+static PetscErrorCode PointRows(SchurCtx *x, PetscInt i, PetscBool normal, PetscBool tangential)
+{
+  SPContact       c  = x->c;
+  const PetscInt  nt = c->dim - 1;
+  PetscInt        nd, dofs[SP_FRIC_MAXD];
+  PetscReal       A, N[SP_FRIC_MAXD], BT[2 * SP_FRIC_MAXD], C[SP_FRIC_MAXD], y[2], t[2], nt2;
+  PetscBool       tangent, stick = PETSC_TRUE;
+  const PetscBool rowN = normal && c->accIn[i] && SPContactPointActive(c, i) ? PETSC_TRUE : PETSC_FALSE;
+  PetscBool       rowT = PETSC_FALSE;
 
   PetscFunctionBeginUser;
-  PetscCall(PetscCalloc1(c->n + 1, &x->in));
-  for (PetscInt i = 0; i < c->n; ++i) x->in[i] = c->accIn[i] && SPContactPointActive(c, i);
-  for (PetscInt i = 0; i < c->n; ++i) x->nrow += x->in[i];
-  PetscCall(PetscMalloc4(x->nrow + 1, &x->row, x->nrow + 1, &x->off, x->nrow * SP_ELEM_MAXD + 1, &x->dof, x->nrow * SP_ELEM_MAXD + 1, &x->N));
-  PetscCall(PetscMalloc1(x->nrow + 1, &x->D));
-  x->nrow = 0;
-  for (PetscInt i = 0; i < c->n; ++i) {
-    PetscInt  nd, dofs[SP_ELEM_MAXD];
-    PetscReal A, N[SP_ELEM_MAXD];
-    if (!x->in[i]) continue;
-    PetscCall(SPContactPointElement(c, i, &nd, dofs, &A, N, NULL));
-    x->row[x->nrow] = i, x->off[x->nrow] = x->ndof, x->D[x->nrow] = A * c->pt[i].eps;
-    for (PetscInt k = 0; k < nd; ++k)
-      if (dofs[k] >= 0 && N[k] != 0.0) x->dof[x->ndof] = dofs[k], x->N[x->ndof++] = N[k];
-    if (x->ndof == x->off[x->nrow]) x->in[i] = PETSC_FALSE; /* no free dof moves its gap: not a row (M would be singular) */
-    else x->nrow++;
+  for (PetscInt a = 0; a < nt && tangential; ++a) rowT = rowT || c->accTIn[2 * i + a];
+  if (!rowN && !rowT) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(Element(c, i, &nd, dofs, &A, N, BT, &tangent));
+  if (!nd) PetscFunctionReturn(PETSC_SUCCESS);
+  if (tangent) SPFrictionTraction(c, i, y, t, &stick);
+  nt2 = tangent ? SPNorm(nt, t) : 0.0;
+  if (rowN) {
+    for (PetscInt k = 0; k < nd; ++k) {
+      C[k] = A * c->pt[i].eps * N[k];
+      for (PetscInt a = 0; a < nt && !stick && nt2 > 0.0; ++a) C[k] += A * c->pt[i].eps * c->pt[i].geo.mu * BT[a * nd + k] * t[a] / nt2;
+    }
+    AddRow(x, i * x->slots, c->pt[i].geo.gap, nd, dofs, N, C);
   }
+  for (PetscInt a = 0; a < nt && tangent && rowT; ++a) {
+    if (!c->accTIn[2 * i + a]) continue;
+    for (PetscInt k = 0; k < nd; ++k) C[k] = A * c->pt[i].epsT * BT[a * nd + k];
+    AddRow(x, i * x->slots + 1 + a, c->accTG[2 * i + a], nd, dofs, &BT[a * nd], C);
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode Rows(SchurCtx *x, PetscBool normal, PetscBool tangential)
+{
+  const PetscInt n = x->c->n * x->slots;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscMalloc3(n + 1, &x->row, n + 1, &x->off, n + 1, &x->b));
+  PetscCall(PetscMalloc3(n * SP_FRIC_MAXD + 1, &x->dof, n * SP_FRIC_MAXD + 1, &x->R, n * SP_FRIC_MAXD + 1, &x->C));
+  for (PetscInt i = 0; i < x->c->n; ++i) PetscCall(PointRows(x, i, normal, tangential));
   x->off[x->nrow] = x->ndof;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -76,7 +120,7 @@ static PetscErrorCode Mult(Mat M, Vec X, Vec Y)
   PetscCall(VecZeroEntries(x->F));
   PetscCall(VecGetArrayRead(X, &xa));
   for (PetscInt r = 0; r < x->nrow; ++r)
-    for (PetscInt k = x->off[r]; k < x->off[r + 1]; ++k) PetscCall(VecSetValue(x->F, x->dof[k], x->D[r] * x->N[k] * xa[x->row[r]], ADD_VALUES));
+    for (PetscInt k = x->off[r]; k < x->off[r + 1]; ++k) PetscCall(VecSetValue(x->F, x->dof[k], x->C[k] * xa[x->row[r]], ADD_VALUES));
   PetscCall(VecAssemblyBegin(x->F));
   PetscCall(VecAssemblyEnd(x->F));
   PetscCall(x->c->jsolve(x->c->jctx, x->F, x->Z, &ok));
@@ -86,10 +130,10 @@ static PetscErrorCode Mult(Mat M, Vec X, Vec Y)
   PetscCall(VecScatterEnd(x->gather, x->Z, x->zloc, INSERT_VALUES, SCATTER_FORWARD));
   PetscCall(VecGetArrayRead(x->zloc, &z));
   PetscCall(VecGetArray(Y, &ya));
-  for (PetscInt i = 0; i < x->c->n; ++i) ya[i] = xa[i];
+  for (PetscInt i = 0; i < x->c->n * x->slots; ++i) ya[i] = xa[i];
   for (PetscInt r = 0; r < x->nrow; ++r) {
     PetscReal dg = 0.0;
-    for (PetscInt k = x->off[r]; k < x->off[r + 1]; ++k) dg += x->N[k] * PetscRealPart(z[k]);
+    for (PetscInt k = x->off[r]; k < x->off[r + 1]; ++k) dg += x->R[k] * PetscRealPart(z[k]);
     ya[x->row[r]] = dg;
   }
   PetscCall(VecRestoreArray(Y, &ya));
@@ -101,9 +145,8 @@ static PetscErrorCode Mult(Mat M, Vec X, Vec Y)
 static PetscErrorCode Destroy(SchurCtx *x)
 {
   PetscFunctionBeginUser;
-  PetscCall(PetscFree(x->in));
-  PetscCall(PetscFree4(x->row, x->off, x->dof, x->N));
-  PetscCall(PetscFree(x->D));
+  PetscCall(PetscFree3(x->row, x->off, x->b));
+  PetscCall(PetscFree3(x->dof, x->R, x->C));
   PetscCall(VecDestroy(&x->F));
   PetscCall(VecDestroy(&x->Z));
   PetscCall(VecDestroy(&x->zloc));
@@ -111,7 +154,7 @@ static PetscErrorCode Destroy(SchurCtx *x)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Solve M d = g over the rows with GMRES to 0.1 of the gap tolerance; *ok: it converged */
+/* Solve M d = gap over the rows with GMRES to 0.1 of the gap tolerance; *ok: it converged */
 static PetscErrorCode SolveShift(SchurCtx *x, Vec d, PetscInt *its, PetscBool *ok)
 {
   KSPConvergedReason reason;
@@ -125,10 +168,11 @@ static PetscErrorCode SolveShift(SchurCtx *x, Vec d, PetscInt *its, PetscBool *o
 
   PetscFunctionBeginUser;
   PetscCall(VecDuplicate(d, &b));
+  PetscCall(VecZeroEntries(b));
   PetscCall(VecGetArray(b, &ba));
-  for (PetscInt i = 0; i < c->n; ++i) ba[i] = x->in[i] ? c->pt[i].geo.gap : 0.0;
+  for (PetscInt r = 0; r < x->nrow; ++r) ba[x->row[r]] = x->b[r];
   PetscCall(VecRestoreArray(b, &ba));
-  PetscCall(MatCreateShell(comm, c->n, c->n, PETSC_DETERMINE, PETSC_DETERMINE, x, &M));
+  PetscCall(MatCreateShell(comm, c->n * x->slots, c->n * x->slots, PETSC_DETERMINE, PETSC_DETERMINE, x, &M));
   PetscCall(MatShellSetOperation(M, MATOP_MULT, (void (*)(void))Mult));
   PetscCall(KSPCreate(comm, &ksp));
   PetscCall(KSPSetOperators(ksp, M, M));
@@ -158,38 +202,65 @@ static PetscErrorCode CanSolve(SPContact c, PetscBool *ok)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* After the plain rule at a boundary (or an augmentation): the shifts of the points it updated
-   (c->accIn, from c->accS) replaced by s + d, clipped to s <= 0. *maxDs: the largest change.
-   Nothing changes without a factorization to back-substitute with, or where GMRES did not reach
-   its tolerance in SP_SCHUR_MAX_IT products (the plain update then stands). */
-PetscErrorCode SPContactSchurUpdate(SPContact c, PetscReal *maxDs)
+/* The new shifts from d: normal s_N = min(0, s + d), tangential s_T = s + d then the cone's clip.
+   *maxDs (this rank's) and *dsT (collective) grow to the largest changes. */
+static PetscErrorCode Apply(SchurCtx *x, Vec d, PetscReal *maxDs, PetscReal *dsT)
 {
-  SchurCtx           x = {0};
-  PetscBool          ok;
-  Vec                d;
+  SPContact          c  = x->c;
+  const PetscInt     nt = c->dim - 1;
   const PetscScalar *da;
-  PetscInt           its, nall;
+  PetscReal          dT = 0.0, all;
 
   PetscFunctionBeginUser;
+  PetscCall(VecGetArrayRead(d, &da));
+  for (PetscInt r = 0; r < x->nrow; ++r) {
+    const PetscInt i = x->row[r] / x->slots, a = x->row[r] % x->slots - 1;
+    if (a < 0) c->pt[i].st.sN = PetscMin(0.0, c->accS[i] + PetscRealPart(da[x->row[r]]));
+    else c->pt[i].st.sT[a] = c->accTS[2 * i + a] + PetscRealPart(da[x->row[r]]);
+  }
+  PetscCall(VecRestoreArrayRead(d, &da));
+  for (PetscInt r = 0; r < x->nrow; ++r) {
+    const PetscInt i = x->row[r] / x->slots;
+    PetscReal      ds[2] = {0, 0};
+    if (c->friction) SPFrictionClipShift(c, i);
+    *maxDs = PetscMax(*maxDs, PetscAbsReal(c->pt[i].st.sN - c->accS[i]));
+    for (PetscInt a = 0; a < nt && x->tangential && c->accTIn[2 * i + a]; ++a) ds[a] = c->pt[i].st.sT[a] - c->accTS[2 * i + a];
+    dT = PetscMax(dT, SPNorm(nt, ds));
+  }
+  PetscCallMPI(MPI_Allreduce(&dT, &all, 1, MPIU_REAL, MPI_MAX, PetscObjectComm((PetscObject)c->dm)));
+  *dsT = PetscMax(*dsT, all);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* After the plain rules at a boundary (or an augmentation): the normal shifts the rule updated
+   (normal: c->accIn, from c->accS) and the stuck points' tangential ones (tangential: c->accTIn,
+   from c->accTS) replaced by the Schur update. Nothing changes without a factorization to
+   back-substitute with, or where GMRES did not reach its tolerance in SP_SCHUR_MAX_IT products
+   (the plain update then stands). Collective. */
+PetscErrorCode SPContactSchurUpdate(SPContact c, PetscBool normal, PetscBool tangential, PetscReal *maxDs, PetscReal *dsT)
+{
+  SchurCtx  x = {0};
+  PetscBool ok;
+  Vec       d;
+  PetscInt  its, nall;
+
+  PetscFunctionBeginUser;
+  if (c->params.accel != SP_ACCEL_SCHUR || (!normal && !tangential)) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(CanSolve(c, &ok));
   if (!ok) PetscFunctionReturn(PETSC_SUCCESS);
-  x.c = c;
-  PetscCall(Rows(&x));
+  x.c     = c;
+  x.slots      = c->dim;
+  x.tangential = tangential && c->friction ? PETSC_TRUE : PETSC_FALSE;
+  PetscCall(Rows(&x, normal, x.tangential));
   PetscCallMPI(MPI_Allreduce(&x.nrow, &nall, 1, MPIU_INT, MPI_SUM, PetscObjectComm((PetscObject)c->dm)));
   if (nall) {
     PetscCall(Gather(&x));
-    PetscCall(VecCreateMPI(PetscObjectComm((PetscObject)c->dm), c->n, PETSC_DETERMINE, &d));
+    PetscCall(VecCreateMPI(PetscObjectComm((PetscObject)c->dm), c->n * x.slots, PETSC_DETERMINE, &d));
     PetscCall(SolveShift(&x, d, &its, &ok));
-    PetscCall(VecGetArrayRead(d, &da));
-    if (ok) *maxDs = 0.0;
-    for (PetscInt i = 0; i < c->n && ok; ++i) {
-      if (x.in[i]) c->pt[i].st.sN = PetscMin(0.0, c->accS[i] + PetscRealPart(da[i]));
-      *maxDs = PetscMax(*maxDs, PetscAbsReal(c->pt[i].st.sN - c->accS[i]));
-    }
-    PetscCall(VecRestoreArrayRead(d, &da));
+    if (ok) PetscCall(Apply(&x, d, maxDs, dsT));
     PetscCall(VecDestroy(&d));
     c->schurSteps += ok;
-    PetscCall(PetscInfo(c->dm, "shift update by the contact Schur complement: %" PetscInt_FMT " points, %" PetscInt_FMT " back-substitutions%s\n", nall, its, ok ? "" : ", not converged: the plain update"));
+    PetscCall(PetscInfo(c->dm, "shift update by the contact Schur complement: %" PetscInt_FMT " shifts, %" PetscInt_FMT " back-substitutions%s\n", nall, its, ok ? "" : ", not converged: the plain update"));
   }
   PetscCall(Destroy(&x));
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -180,7 +180,6 @@ static PetscErrorCode Accelerate(SPContact c, PetscReal *maxDs)
   PetscBool used = PETSC_FALSE;
 
   PetscFunctionBeginUser;
-  if (c->params.accel == SP_ACCEL_SCHUR) PetscCall(SPContactSchurUpdate(c, maxDs));
   if (!c->accel) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(SPShiftAccelUpdate(c->accel, c->accIn, c->accS, c->accG, c->accNew, &used));
   if (!used) PetscFunctionReturn(PETSC_SUCCESS);
@@ -282,6 +281,7 @@ PetscErrorCode SPContactNewtonUpdate(SPContact c, Vec W, PetscBool *changed)
      after the test (F2 rigid edge: creep 6.2e-13 > 1e-10 h_c = 4.9e-13 when it did not count) */
   if (fupdate) PetscCall(SPFrictionUpdate(c, applies ? PETSC_FALSE : PETSC_TRUE, &dsT));
   else PetscCall(ResetInNewton(c, c->accelT)); /* the stick/slip set moved: a new map */
+  PetscCall(SPContactSchurUpdate(c, applies, fupdate, &maxDs, &dsT)); /* -contact_shift_accel schur: over both rules' shifts */
   PetscCall(Bookkeep(c, maxDs, PETSC_TRUE));
   c->boundary++;
   c->setSettled = c->stats.activeChanged == 0 ? PETSC_TRUE : PETSC_FALSE;
@@ -407,6 +407,7 @@ PetscErrorCode SPContactSolveUpdate(SPContact c, Vec X, PetscInt done, PetscBool
   }
   if (!doneN) PetscCall(Accelerate(c, &maxDs)); /* across the augmentations of the load step */
   PetscCall(SPFrictionUpdate(c, PETSC_FALSE, &dsT)); /* alm lost with the hold: F1b 67 -> 70 at alpha 100 */
+  PetscCall(SPContactSchurUpdate(c, !doneN, PETSC_TRUE, &maxDs, &dsT));
   if (doneN && creepOK && c->stats.maxSlipShiftResidual <= c->slipRtol) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(Bookkeep(c, maxDs, PETSC_FALSE));
   c->stats.augmentations++;
