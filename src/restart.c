@@ -16,7 +16,8 @@
 #include <hdf5.h>
 #include <stdlib.h>
 
-#define NCOUNT  35 /* reals per rank in /restart/counters */
+#define NCOUNT  36 /* reals per rank in /restart/counters */
+#define NCOUNT9 35 /* format 9: without the Schur update's back-substitutions */
 #define NCOUNT8 29 /* format 8: without the solver's reuse counters and the accelerated updates */
 #define NCOUNT7 28 /* format 7: without the chatter holds */
 #define NCOUNT6 27 /* format 6: without the direct solver's step */
@@ -42,7 +43,7 @@ static PetscErrorCode Counters(PetscBool pack, SPApp a, PetscReal *inc, PetscRea
 
   PetscFunctionBeginUser;
   PetscCall(SPContactGetAccelSteps(c, &accelSteps));
-  PetscReal v[NCOUNT] = {a->loadReached, *inc, (PetscReal)a->stepsDone, (PetscReal)a->cutbacks, (PetscReal)s->newtonTotal, (PetscReal)s->linearTotal, (PetscReal)s->funcTotal, (PetscReal)c->evaluations, (PetscReal)c->stepLimits, (PetscReal)c->shiftUpdates, (PetscReal)c->exchanges, (PetscReal)c->received, (PetscReal)c->rebuilds, (PetscReal)c->stats.augmentations, (PetscReal)c->centreSet, c->centre[0], c->centre[1], c->centre[2], (PetscReal)c->exchangeTime, s->fscale, (PetscReal)a->streak, (PetscReal)c->capRetries, (PetscReal)s->reorthogonalise, a->loadBefore, (PetscReal)c->havePrev, (PetscReal)c->predictions, (PetscReal)c->jumpWaits, (PetscReal)s->directStep, (PetscReal)c->chatterHolds, (PetscReal)s->jacReuses, (PetscReal)s->pcKeeps, (PetscReal)s->refinedSteps, (PetscReal)s->refinedLinear, (PetscReal)s->accepted, (PetscReal)accelSteps};
+  PetscReal v[NCOUNT] = {a->loadReached, *inc, (PetscReal)a->stepsDone, (PetscReal)a->cutbacks, (PetscReal)s->newtonTotal, (PetscReal)s->linearTotal, (PetscReal)s->funcTotal, (PetscReal)c->evaluations, (PetscReal)c->stepLimits, (PetscReal)c->shiftUpdates, (PetscReal)c->exchanges, (PetscReal)c->received, (PetscReal)c->rebuilds, (PetscReal)c->stats.augmentations, (PetscReal)c->centreSet, c->centre[0], c->centre[1], c->centre[2], (PetscReal)c->exchangeTime, s->fscale, (PetscReal)a->streak, (PetscReal)c->capRetries, (PetscReal)s->reorthogonalise, a->loadBefore, (PetscReal)c->havePrev, (PetscReal)c->predictions, (PetscReal)c->jumpWaits, (PetscReal)s->directStep, (PetscReal)c->chatterHolds, (PetscReal)s->jacReuses, (PetscReal)s->pcKeeps, (PetscReal)s->refinedSteps, (PetscReal)s->refinedLinear, (PetscReal)s->accepted, (PetscReal)accelSteps, (PetscReal)c->schurSolves};
 
   if (pack) {
     for (PetscInt k = 0; k < NCOUNT; ++k) b[k] = v[k];
@@ -71,11 +72,12 @@ static PetscErrorCode Counters(PetscBool pack, SPApp a, PetscReal *inc, PetscRea
   s->refinedLinear   = (PetscInt)b[32];
   s->accepted        = (PetscInt)b[33];
   c->accelStepsBefore = (PetscInt)b[34]; /* the accelerated updates before the restart */
+  c->schurSolves      = (PetscInt)b[35]; /* format 10: the Schur update's back-substitutions */
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 /* The run's identity, as attributes of /restart: written with the first step, compared on restart */
-#define FORMAT 9 /* 1: vectors in the partition's order (same rank count only); 2: partition-free; 3: + the growth streak; 4: + the recoveries (step-cap retries, GMRES re-orthogonalisation); 5: + the stuck points' predictor (the step before the last); 6: + the stick/slip jump waits; 7: + the direct solver's step; 8: + the chatter holds; 9: + the solver's reuse counters and the accelerated updates (6, 7 and 8 are read too) */
+#define FORMAT 10 /* 1: vectors in the partition's order (same rank count only); 2: partition-free; 3: + the growth streak; 4: + the recoveries (step-cap retries, GMRES re-orthogonalisation); 5: + the stuck points' predictor (the step before the last); 6: + the stick/slip jump waits; 7: + the direct solver's step; 8: + the chatter holds; 9: + the solver's reuse counters and the accelerated updates; 10: + the Schur update's back-substitutions (6 to 9 are read too) */
 
 typedef struct {
   PetscInt dim, dofs, points, ranks, friction, loadSteps;
@@ -308,7 +310,7 @@ static PetscErrorCode CheckIdentity(SPApp a, PetscViewer h5, PetscInt *steps, Pe
     PetscInt format;
     PetscCall(PetscViewerHDF5ReadAttribute(h5, "/restart", "format", PETSC_INT, NULL, &format));
     PetscCheck(format >= 6 && format <= FORMAT, a->comm, PETSC_ERR_USER_INPUT, "-restart %s: restart data format %" PetscInt_FMT " of another spcontact version (this one reads 6 to %d); resume it with that version", a->restartFile, format, FORMAT);
-    *ncount = format == 6 ? NCOUNT6 : (format == 7 ? NCOUNT7 : (format == 8 ? NCOUNT8 : NCOUNT));
+    *ncount = format == 6 ? NCOUNT6 : (format == 7 ? NCOUNT7 : (format == 8 ? NCOUNT8 : (format == 9 ? NCOUNT9 : NCOUNT)));
   }
   PetscCall(PetscViewerHDF5ReadAttribute(h5, "/restart", "ranks", PETSC_INT, NULL, ranks));
   PetscCall(GetIdentity(a, &id));

@@ -60,6 +60,7 @@ rs_case() {
   # of (one reuse or keep fewer, at most) and the pairs' pattern of its new matrix (one more)
   if [ "$np2" = "$np" ]; then
     same_summary "$CASE_DIR/full.txt" "$CASE_DIR/rest.txt" 0 newton_iterations linear_iterations refined_steps refinement_linear_iterations linear_solves_accepted contact_evaluations contact_shift_updates contact_shift_accel_steps || rc=1
+    if [ -n "$(sval "$CASE_DIR/full.txt" contact_shift_accel_solves)" ]; then same_summary "$CASE_DIR/full.txt" "$CASE_DIR/rest.txt" 0 contact_shift_accel_solves || rc=1; fi
     local jf jr pf pr key
     for key in jacobian_reuses preconditioner_kept; do
       jf=$(sval "$CASE_DIR/full.txt" $key) jr=$(sval "$CASE_DIR/rest.txt" $key)
@@ -129,6 +130,8 @@ test_restart_friction_patch_3to1() { RS_NP=1 rs_case 3 -options_file input/frict
 # uninterrupted run (before, the restarted run counted them from 0)
 test_restart_counters_iterative() { rs_case 1 -options_file input/indent3d.opts -dm_plex_box_faces 8,8,8; }
 test_restart_counters_anderson()  { rs_case 2 -options_file input/patch_4_5.opts -contact_two_pass; }
+# and the Schur update's steps and back-substitutions (restart format 10; B6 in 10 steps, 2 ranks)
+test_restart_counters_schur()     { rs_case 2 -options_file input/hertz2d_twobody.opts -contact_shift_accel schur; }
 test_restart_friction_pair_slide_2to1() { RS_NP=1 rs_case 2 -options_file input/slide2d.opts -contact_friction_mu 0.3; }
 
 # rs_kill SIG CODE: a real signal from outside (1 rank, no launcher): the run stops after the step
