@@ -374,6 +374,8 @@ PETSC_EXTERN void           SPContactPairsKeepFacets(SPContact);
 PETSC_EXTERN PetscErrorCode SPContactPairsDestroy(SPContact);
 PETSC_EXTERN PetscBool      SPContactGeometricTangent(SPContact);
 PETSC_EXTERN PetscErrorCode SPOutputWriteXdmf(SPOutput, PetscBool);
+PETSC_EXTERN PetscErrorCode SPXdmfWriteCollection(SPOutput, const char[], PetscBool, const char[], const char[], void (*)(FILE *, PetscInt, void *), void *);
+PETSC_EXTERN const char *const SPOutputContactFields[4], *const SPOutputFrictionFields[3];
 PETSC_EXTERN PetscErrorCode SPOutputWriteSurfaceXdmf(SPOutput, SPContact, PetscBool, PetscBool *);
 
 /* fast-elastic.c: element-level isotropic linear elasticity on first-order cells */

@@ -73,37 +73,30 @@ static void Field(FILE *fp, const char h5[], const char name[], PetscInt nc, Pet
     fprintf(fp, "        <Attribute Name=\"%s\" AttributeType=\"Vector\" Center=\"Node\">\n          <DataItem DataType=\"Float\" Precision=\"8\" Dimensions=\"%d %d\" Format=\"HDF\">%s:/vertex_fields/%s_Field_0|%d 0 0:1 1 1:1 %d %d:%d %d %d</DataItem>\n        </Attribute>\n", name, (int)nv, (int)nc, h5, name, (int)step, (int)nv, (int)nc, (int)nsteps, (int)nv, (int)nc);
 }
 
-/* Rank 0: the surface XDMF of nf facets (connectivity conn) over the run's steps */
-static PetscErrorCode WriteFile(SPOutput o, const char xmf[], const char h5[], PetscInt dim, PetscInt nv, PetscInt nf, PetscInt corners, const PetscInt conn[])
-{
-  static const char *const cfields[] = {"contact_pressure", "gap", "shift", "active"};
-  static const char *const ffields[] = {"tangential_traction", "slip", "status"};
-  FILE *fp;
+typedef struct {
+  SPOutput        o;
+  const char     *h5;
+  PetscInt        dim, nv, nf, corners;
+  const PetscInt *conn;
+} SurfaceGrid;
 
-  PetscFunctionBeginUser;
-  fp = fopen(xmf, "w");
-  PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write %s", xmf);
-  fprintf(fp, "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n  <Domain>\n");
-  fprintf(fp, "    <Grid Name=\"contact_surface\" GridType=\"Collection\" CollectionType=\"Temporal\">\n");
-  for (PetscInt k = 0; k < o->nsteps; ++k) {
-    fprintf(fp, "      <Grid Name=\"surface_step_%d\" GridType=\"Uniform\">\n        <Time Value=\"%.10g\"/>\n", (int)k, (double)o->times[k]);
-    if (dim == 2) fprintf(fp, "        <Topology TopologyType=\"Polyline\" NodesPerElement=\"2\" NumberOfElements=\"%d\">\n", (int)nf);
-    else fprintf(fp, "        <Topology TopologyType=\"%s\" NumberOfElements=\"%d\">\n", corners == 3 ? "Triangle" : "Quadrilateral", (int)nf);
-    fprintf(fp, "          <DataItem Format=\"XML\" DataType=\"Int\" Dimensions=\"%d %d\">\n", (int)nf, (int)corners);
-    for (PetscInt f = 0; f < nf; ++f) {
-      for (PetscInt j = 0; j < corners; ++j) fprintf(fp, "%s%d", j ? " " : "            ", (int)conn[f * corners + j]);
-      fprintf(fp, "\n");
-    }
-    fprintf(fp, "          </DataItem>\n        </Topology>\n");
-    fprintf(fp, "        <Geometry GeometryType=\"%s\">\n          <DataItem Format=\"HDF\" DataType=\"Float\" Precision=\"8\" Dimensions=\"%d %d\">%s:/geometry/vertices</DataItem>\n        </Geometry>\n", dim == 2 ? "XY" : "XYZ", (int)nv, (int)dim, h5);
-    for (PetscInt f = 0; f < 4; ++f) Field(fp, h5, cfields[f], 1, k, o->nsteps, nv);
-    if (o->frictionFields)
-      for (PetscInt f = 0; f < 3; ++f) Field(fp, h5, ffields[f], f < 2 ? dim : 1, k, o->nsteps, nv);
-    fprintf(fp, "      </Grid>\n");
+/* One step of the surface grid: nf facets (connectivity conn, inline) over /geometry/vertices */
+static void SurfaceStep(FILE *fp, PetscInt k, void *ctx)
+{
+  const SurfaceGrid *g = (const SurfaceGrid *)ctx;
+
+  if (g->dim == 2) fprintf(fp, "        <Topology TopologyType=\"Polyline\" NodesPerElement=\"2\" NumberOfElements=\"%d\">\n", (int)g->nf);
+  else fprintf(fp, "        <Topology TopologyType=\"%s\" NumberOfElements=\"%d\">\n", g->corners == 3 ? "Triangle" : "Quadrilateral", (int)g->nf);
+  fprintf(fp, "          <DataItem Format=\"XML\" DataType=\"Int\" Dimensions=\"%d %d\">\n", (int)g->nf, (int)g->corners);
+  for (PetscInt f = 0; f < g->nf; ++f) {
+    for (PetscInt j = 0; j < g->corners; ++j) fprintf(fp, "%s%d", j ? " " : "            ", (int)g->conn[f * g->corners + j]);
+    fprintf(fp, "\n");
   }
-  fprintf(fp, "    </Grid>\n  </Domain>\n</Xdmf>\n");
-  PetscCall(SPOutputCheckStream(fp, xmf, PETSC_TRUE));
-  PetscFunctionReturn(PETSC_SUCCESS);
+  fprintf(fp, "          </DataItem>\n        </Topology>\n");
+  fprintf(fp, "        <Geometry GeometryType=\"%s\">\n          <DataItem Format=\"HDF\" DataType=\"Float\" Precision=\"8\" Dimensions=\"%d %d\">%s:/geometry/vertices</DataItem>\n        </Geometry>\n", g->dim == 2 ? "XY" : "XYZ", (int)g->nv, (int)g->dim, g->h5);
+  for (PetscInt f = 0; f < 4; ++f) Field(fp, g->h5, SPOutputContactFields[f], 1, k, g->o->nsteps, g->nv);
+  if (g->o->frictionFields)
+    for (PetscInt f = 0; f < 3; ++f) Field(fp, g->h5, SPOutputFrictionFields[f], f < 2 ? g->dim : 1, k, g->o->nsteps, g->nv);
 }
 
 /* Collective. A failed write on rank 0 is returned there (for SPOutputWriteEnd) after the
@@ -130,8 +123,9 @@ PetscErrorCode SPOutputWriteSurfaceXdmf(SPOutput o, SPContact c, PetscBool compl
   PetscCall(DMRestoreGlobalVector(o->dmS, &one));
   PetscCall(GatherFacets(c, o->dm, &nf, &corners, &conn));
   if (!rank && nf > 0) {
+    const SurfaceGrid g = {o, h5, dim, nv, nf, corners, conn};
     PetscCall(SPOutputH5Reference(o, complete, h5, sizeof(h5)));
-    ierr = WriteFile(o, xmf, h5, dim, nv, nf, corners, conn);
+    ierr = SPXdmfWriteCollection(o, xmf, PETSC_FALSE, "contact_surface", "surface_step", SurfaceStep, (void *)&g);
   }
   *written = nf > 0 && !ierr ? PETSC_TRUE : PETSC_FALSE;
   PetscCallMPI(MPI_Bcast(written, 1, MPIU_BOOL, 0, PetscObjectComm((PetscObject)o->dm)));

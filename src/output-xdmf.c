@@ -68,33 +68,53 @@ static void Attribute(FILE *fp, const char h5[], const char name[], PetscInt nc,
   fprintf(fp, "        </Attribute>\n");
 }
 
-static PetscErrorCode WriteFile(SPOutput o, const char xmf[], const char h5[], PetscInt dim, PetscInt nv, PetscInt nc, PetscInt corners, PetscBool legacy)
+/* Rank 0: one XDMF file, the XML header (v2: XDMF 2.0 with its DOCTYPE, as both volume files have
+   it; else 3.0, the surface file's) and a temporal
+   collection with one uniform grid per output step; grid() writes a step's topology, geometry and
+   fields. The surface file (output-surface.c) is written by it too. */
+PetscErrorCode SPXdmfWriteCollection(SPOutput o, const char xmf[], PetscBool v2, const char name[], const char stepName[], void (*grid)(FILE *, PetscInt, void *), void *ctx)
 {
-  static const char *const cfields[] = {"contact_pressure", "gap", "shift", "active"};
-  static const char *const ffields[] = {"tangential_traction", "slip", "status"}; /* with friction */
   FILE *fp;
 
   PetscFunctionBeginUser;
   fp = fopen(xmf, "w");
   PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write %s", xmf);
-  fprintf(fp, "<?xml version=\"1.0\" ?>\n<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n<Xdmf Version=\"2.0\">\n  <Domain>\n");
-  fprintf(fp, "    <Grid Name=\"spcontact\" GridType=\"Collection\" CollectionType=\"Temporal\">\n");
+  fprintf(fp, "<?xml version=\"1.0\" ?>\n%s<Xdmf Version=\"%s\">\n  <Domain>\n", v2 ? "<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n" : "", v2 ? "2.0" : "3.0");
+  fprintf(fp, "    <Grid Name=\"%s\" GridType=\"Collection\" CollectionType=\"Temporal\">\n", name);
   for (PetscInt k = 0; k < o->nsteps; ++k) {
-    fprintf(fp, "      <Grid Name=\"step_%d\" GridType=\"Uniform\">\n        <Time Value=\"%.10g\"/>\n", (int)k, (double)o->times[k]);
-    fprintf(fp, "        <Topology TopologyType=\"%s\" NumberOfElements=\"%d\">\n", TopologyType(dim, corners), (int)nc);
-    fprintf(fp, "          <DataItem Format=\"HDF\" DataType=\"Int\" Dimensions=\"%d %d\">%s:/viz/topology/cells</DataItem>\n        </Topology>\n", (int)nc, (int)corners, h5);
-    fprintf(fp, "        <Geometry GeometryType=\"%s\">\n", dim == 2 ? "XY" : "XYZ");
-    fprintf(fp, "          <DataItem Format=\"HDF\" DataType=\"Float\" Precision=\"8\" Dimensions=\"%d %d\">%s:/geometry/vertices</DataItem>\n        </Geometry>\n", (int)nv, (int)dim, h5);
-    Attribute(fp, h5, "displacement", dim, k, o->nsteps, nv, legacy);
-    if (o->contactFields)
-      for (PetscInt f = 0; f < 4; ++f) Attribute(fp, h5, cfields[f], 1, k, o->nsteps, nv, legacy);
-    if (o->frictionFields)
-      for (PetscInt f = 0; f < 3; ++f) Attribute(fp, h5, ffields[f], f < 2 ? dim : 1, k, o->nsteps, nv, legacy);
+    fprintf(fp, "      <Grid Name=\"%s_%d\" GridType=\"Uniform\">\n        <Time Value=\"%.10g\"/>\n", stepName, (int)k, (double)o->times[k]);
+    grid(fp, k, ctx);
     fprintf(fp, "      </Grid>\n");
   }
   fprintf(fp, "    </Grid>\n  </Domain>\n</Xdmf>\n");
   PetscCall(SPOutputCheckStream(fp, xmf, PETSC_TRUE));
   PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+const char *const SPOutputContactFields[4]  = {"contact_pressure", "gap", "shift", "active"};
+const char *const SPOutputFrictionFields[3] = {"tangential_traction", "slip", "status"}; /* vector, vector, scalar */
+
+typedef struct {
+  SPOutput    o;
+  const char *h5;
+  PetscInt    dim, nv, nc, corners;
+  PetscBool   legacy;
+} VolumeGrid;
+
+static void VolumeStep(FILE *fp, PetscInt k, void *ctx)
+{
+  const VolumeGrid *g = (const VolumeGrid *)ctx;
+  const SPOutput    o = g->o;
+
+  fprintf(fp, "        <Topology TopologyType=\"%s\" NumberOfElements=\"%d\">\n", TopologyType(g->dim, g->corners), (int)g->nc);
+  fprintf(fp, "          <DataItem Format=\"HDF\" DataType=\"Int\" Dimensions=\"%d %d\">%s:/viz/topology/cells</DataItem>\n        </Topology>\n", (int)g->nc, (int)g->corners, g->h5);
+  fprintf(fp, "        <Geometry GeometryType=\"%s\">\n", g->dim == 2 ? "XY" : "XYZ");
+  fprintf(fp, "          <DataItem Format=\"HDF\" DataType=\"Float\" Precision=\"8\" Dimensions=\"%d %d\">%s:/geometry/vertices</DataItem>\n        </Geometry>\n", (int)g->nv, (int)g->dim, g->h5);
+  Attribute(fp, g->h5, "displacement", g->dim, k, o->nsteps, g->nv, g->legacy);
+  if (o->contactFields)
+    for (PetscInt f = 0; f < 4; ++f) Attribute(fp, g->h5, SPOutputContactFields[f], 1, k, o->nsteps, g->nv, g->legacy);
+  if (o->frictionFields)
+    for (PetscInt f = 0; f < 3; ++f) Attribute(fp, g->h5, SPOutputFrictionFields[f], f < 2 ? g->dim : 1, k, o->nsteps, g->nv, g->legacy);
 }
 
 /* <prefix>.xmf for ParaView's default (Xdmf3) reader and <prefix>-xdmf2.xmf for the legacy "XDMF
@@ -115,9 +135,10 @@ PetscErrorCode SPOutputWriteXdmf(SPOutput o, PetscBool complete)
   if (rank) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(SPOutputH5Reference(o, complete, h5, sizeof(h5)));
   for (PetscInt legacy = 0; legacy < 2; ++legacy) {
+    VolumeGrid g = {o, h5, dim, nv, nc, corners, legacy ? PETSC_TRUE : PETSC_FALSE};
     PetscCall(PetscSNPrintf(xmf, sizeof(xmf), legacy ? "%s-xdmf2.xmf.part" : "%s.xmf.part", o->prefix));
     PetscCall(PetscStrncpy(o->guard.file, xmf, sizeof(o->guard.file))); /* the file a failure names */
-    if (o->nsteps) PetscCall(WriteFile(o, xmf, h5, dim, nv, nc, corners, legacy ? PETSC_TRUE : PETSC_FALSE));
+    if (o->nsteps) PetscCall(SPXdmfWriteCollection(o, xmf, PETSC_TRUE, "spcontact", "step", VolumeStep, &g));
     else (void)remove(xmf); /* a stale file of an earlier run must not pose as this run's */
   }
   PetscFunctionReturn(PETSC_SUCCESS);
