@@ -182,6 +182,7 @@ static PetscErrorCode CheckFriction(SPContact c)
    MethodSetFromOptions) */
 static PetscErrorCode UnreadUnused(SPContact c)
 {
+  static const char *const updates[]  = {"-contact_branch_hold", "-contact_chatter_flips", "-contact_chatter_tension", "-contact_shift_settled"};
   static const char *const friction[] = {"-contact_friction_alpha", "-contact_friction_creep_rtol", "-contact_friction_max_flips", "-contact_friction_stick_hold", "-contact_friction_jump_wait", "-contact_friction_slip_rtol", "-contact_shift_predict"};
 
   PetscFunctionBeginUser;
@@ -192,6 +193,8 @@ static PetscErrorCode UnreadUnused(SPContact c)
   for (size_t k = 0; k < sizeof(friction) / sizeof(friction[0]) && !c->friction; ++k) PetscCall(SPOptionsUnread(friction[k]));
   if (c->params.accel != SP_ACCEL_ANDERSON) PetscCall(SPOptionsUnread("-contact_shift_accel_depth"));
   if (!c->nuser) PetscCall(SPOptionsUnread("-contact_pair_exchange_all"));
+  if (c->method->timing == SP_UPDATE_NONE) /* penalty: no shift update to hold, settle or chatter over */
+    for (size_t k = 0; k < sizeof(updates) / sizeof(updates[0]); ++k) PetscCall(SPOptionsUnread(updates[k]));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -791,6 +791,17 @@ static PetscErrorCode GraphWithoutZeros(SPSolver s, PetscBool friction)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Options read for -help that this run cannot use, reported as unused (options-unread.c): the
+   Jacobian reuse without a linear material, the kept preconditioner with a factorization from the
+   start (the 2D default) */
+static PetscErrorCode UnreadUnused(SPSolver s)
+{
+  PetscFunctionBeginUser;
+  if (!s->reuse) PetscCall(SPOptionsUnread("-solver_jacobian_reuse"));
+  if (s->directStart) PetscCall(SPOptionsUnread("-solver_pc_lag"));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode SPSolverSetFromOptions(SPSolver s)
 {
   SNESLineSearch ls;
@@ -881,6 +892,7 @@ PetscErrorCode SPSolverSetFromOptions(SPSolver s)
   PetscCall(SPSolverSetUpAccept(s));
   PetscCall(SPSolverSetUpDirect(s));
   PetscCall(SPSolverSetUpPCLag(s));
+  PetscCall(UnreadUnused(s));
   PetscCall(ReadLimits(s));
   PetscCall(SPContactIsActive(s->contact, &on));
   if (on) {

@@ -225,6 +225,18 @@ test_bad_input_unused_option() {
   assert_eq warnings_contact_without_contact "$(grep -c '^spcontact: warning: option -contact_\(alpha\|method\) was not used' "$CASE_DIR/nocontact.txt")" 2 || rc=1
   spc "$CASE_DIR/used.txt" 1 -options_file input/friction_block2d.opts -contact_method alm -contact_alm_max 40 -contact_friction_alpha 20 -contact_shift_accel anderson -contact_shift_accel_depth 3 -output_dir "$CASE_DIR" -output_name used -output_fields false || rc=1
   assert_eq warnings_used "$(grep -c 'warning' "$CASE_DIR/used.txt")" 0 || rc=1
+  # options of a shift update with penalty (no update: no hold, settled set or chatter), the
+  # kept preconditioner with the 2D factorization from the start, the Jacobian reuse with the
+  # Neo-Hookean material (no linear stiffness to keep); used, not reported: the chatter hold's
+  # flips with shifted, the reuse with a linear material
+  spc "$CASE_DIR/modes.txt" 1 -options_file input/hertz2d.opts -contact_method penalty -contact_branch_hold false -contact_chatter_flips 2 -contact_chatter_tension 1e-3 -contact_shift_settled false -solver_pc_lag 0.5 -output_dir "$CASE_DIR" -output_name modes -output_fields false || rc=1
+  for opt in contact_branch_hold contact_chatter_flips contact_chatter_tension contact_shift_settled solver_pc_lag; do
+    grep "^spcontact: warning: option -$opt was not used" "$CASE_DIR/modes.txt" || { echo "no report of -$opt"; rc=1; }
+  done
+  spc "$CASE_DIR/nh.txt" 1 -options_file input/hertz2d.opts -material_model neo_hookean -solver_jacobian_reuse 3 -output_dir "$CASE_DIR" -output_name nh -output_fields false || rc=1
+  grep "^spcontact: warning: option -solver_jacobian_reuse was not used" "$CASE_DIR/nh.txt" || { echo "no report of -solver_jacobian_reuse"; rc=1; }
+  spc "$CASE_DIR/modes_used.txt" 1 -options_file input/hertz2d.opts -contact_chatter_flips 2 -solver_jacobian_reuse 3 -output_dir "$CASE_DIR" -output_name modes_used -output_fields false || rc=1
+  assert_eq warnings_modes_used "$(grep -c 'warning' "$CASE_DIR/modes_used.txt")" 0 || rc=1
   return $rc
 }
 
