@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The seed's friction claim, measured: penalty friction, the shifted penalty (tangential shift) and
 # the augmented Lagrangian at alpha = alpha_T = 10, 100, 1000 on a friction benchmark.
-# Usage: [ALPHAS="10 100"] scripts/compare_friction.sh [friction_block2d|friction_patch_4_5|friction_slide2d|friction_slide3d|cattaneo2d|cattaneo3d] [NP] [PETSc options]
+# Usage: [ALPHAS="10 100"] [METHODS="penalty shifted shifted:schur alm"] scripts/compare_friction.sh [friction_block2d|friction_patch_4_5|friction_slide2d|friction_slide3d|cattaneo2d|cattaneo3d] [NP] [PETSc options]
 # Prints one table (also <outdir>/compare.csv): Newton and linear iterations, cut-backs, max stick
 # creep (absolute and in element sizes h), stick-zone error in elements (cattaneo2d: half-width
 # against c = 0.076113 and centre; cattaneo3d: stick radius against c from the measured F, and
@@ -17,10 +17,12 @@ fields=false; [ -n "$cm" ] && fields=true # the stick zone is read from _contact
 declare -A T=([friction_block2d]=-0.0015 [friction_patch_4_5]=-0.0015 [friction_slide2d]=-0.003 [friction_slide3d]=-0.002598076211353316 [cattaneo2d]=-0.0015 [cattaneo3d]=-0.15)
 declare -A H=([friction_block2d]=0.025 [friction_patch_4_5]=0.2 [friction_slide2d]=0.025 [friction_slide3d]=0.05 [cattaneo2d]=0.005 [cattaneo3d]=0.0104)
 echo "method,alpha,newton_iterations,linear_iterations,cutbacks,max_stick_creep,creep_over_h,stick_halfwidth_err_el,stick_centre_err_el,tangential_force_error,wall_time,converged" > "$out/compare.csv"
-for m in penalty shifted alm; do
+# METHODS: method names, or method:accel for a shift update rule (-contact_shift_accel accel)
+for spec in ${METHODS:-penalty shifted alm}; do
+  m=${spec%%:*}; accel=(); [ "$spec" != "$m" ] && accel=(-contact_shift_accel "${spec#*:}")
   for a in ${ALPHAS:-10 100 1000}; do
-    name=${m}_a$a
-    $MPIEXEC -n "$np" bin/spcontact -options_file input/$problem.opts -contact_method $m -contact_alpha $a \
+    name=${spec/:/-}_a$a
+    $MPIEXEC -n "$np" bin/spcontact -options_file input/$problem.opts -contact_method $m "${accel[@]}" -contact_alpha $a \
       -output_dir "$out" -output_name "$name" -output_fields $fields "$@" > "$out/$name.txt" 2>&1
     v() { awk -v k="$1" '/^=== spcontact summary/{on=1} on && $1==k {print $2}' "$out/$name.txt" | tail -1; }
     key=contact_tangential_force_x; [ "$problem" = friction_patch_4_5 ] || [ -n "$cm" ] && key=contact_force_x
@@ -34,7 +36,7 @@ for m in penalty shifted alm; do
     terr=$(awk -v t="$t" -v r="${T[$problem]}" 'BEGIN{ if (t == "") print "-"; else printf "%.1e", (t-r)/(r<0?-r:r)}')
     creep=$(v contact_max_stick_creep)
     ch=$(awk -v c="$creep" -v h="${H[$problem]}" 'BEGIN{ if (c == "") print "-"; else printf "%.1e", c/h}')
-    echo "$m,$a,$(v newton_iterations),$(v linear_iterations),$(v cutbacks),$creep,$ch,${zw:--},${zc:--},$terr,$(v wall_time),$(v converged)" >> "$out/compare.csv"
+    echo "$spec,$a,$(v newton_iterations),$(v linear_iterations),$(v cutbacks),$creep,$ch,${zw:--},${zc:--},$terr,$(v wall_time),$(v converged)" >> "$out/compare.csv"
   done
 done
 column -s, -t "$out/compare.csv"
@@ -46,7 +48,7 @@ import matplotlib.pyplot as plt
 out = sys.argv[1]
 fig, axs = plt.subplots(1, 3, figsize=(13, 4.2), sharey=True)
 for ax, a in zip(axs, (10, 100, 1000)):
-    for m, style in [("penalty", "k-"), ("shifted", "b-o"), ("alm", "r--^")]:
+    for m, style in [("penalty", "k-"), ("shifted", "b-o"), ("shifted-schur", "g-s"), ("alm", "r--^")]:
         f = os.path.join(out, f"{m}_a{a}.csv")
         if not os.path.exists(f):
             continue
