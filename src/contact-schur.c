@@ -23,6 +23,7 @@ typedef struct {
   PetscReal *R, *C, *b;   /* row (gap change per dof), column (force per unit shift), and per row its gap */
   Vec        F, Z, zloc;  /* global force and solution, gathered solution values */
   VecScatter gather;
+  PetscBool  failed;      /* a back-substitution failed: the plain update stands */
 } SchurCtx;
 
 /* Element of point i: dofs, area, N = dg/du and (friction, anchored) B_T = dDg_T/du; *nd = 0: none */
@@ -124,7 +125,10 @@ static PetscErrorCode Mult(Mat M, Vec X, Vec Y)
   PetscCall(VecAssemblyBegin(x->F));
   PetscCall(VecAssemblyEnd(x->F));
   PetscCall(x->c->jsolve(x->c->jctx, x->F, x->Z, &ok));
-  PetscCheck(ok, PetscObjectComm((PetscObject)M), PETSC_ERR_NOT_CONVERGED, "the back-substitution of the shift update failed");
+  if (!ok) { /* collective: every rank's KSP failed alike */
+    x->failed = PETSC_TRUE;
+    PetscCall(VecZeroEntries(x->Z));
+  }
   x->c->schurSolves++;
   PetscCall(VecScatterBegin(x->gather, x->Z, x->zloc, INSERT_VALUES, SCATTER_FORWARD));
   PetscCall(VecScatterEnd(x->gather, x->Z, x->zloc, INSERT_VALUES, SCATTER_FORWARD));
@@ -184,7 +188,7 @@ static PetscErrorCode SolveShift(SchurCtx *x, Vec d, PetscInt *its, PetscBool *o
   PetscCall(KSPSolve(ksp, b, d));
   PetscCall(KSPGetIterationNumber(ksp, its));
   PetscCall(KSPGetConvergedReason(ksp, &reason));
-  *ok = reason > 0 ? PETSC_TRUE : PETSC_FALSE;
+  *ok = reason > 0 && !x->failed ? PETSC_TRUE : PETSC_FALSE;
   PetscCall(KSPDestroy(&ksp));
   PetscCall(MatDestroy(&M));
   PetscCall(VecDestroy(&b));
