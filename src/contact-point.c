@@ -127,6 +127,7 @@ PetscErrorCode SPContactPointsSetUp(SPContact c, DMLabel slave)
   if (c->params.accel != SP_ACCEL_NONE) {
     PetscCall(PetscCalloc4(c->n + 1, &c->accS, c->n + 1, &c->accG, c->n + 1, &c->accNew, c->n + 1, &c->accIn));
     PetscCall(PetscCalloc4(2 * c->n + 1, &c->accTS, 2 * c->n + 1, &c->accTG, 2 * c->n + 1, &c->accTNew, 2 * c->n + 1, &c->accTIn));
+    PetscCall(PetscCalloc1(c->n + 1, &c->accTSlip));
   }
   if (c->params.accel == SP_ACCEL_ANDERSON) {
     PetscCall(SPShiftAccelCreate(PetscObjectComm((PetscObject)c->dm), c->n, c->params.accelDepth, &c->accel));
@@ -145,6 +146,7 @@ PetscErrorCode SPContactPointsDestroy(SPContact c)
   PetscCall(PetscFree4(c->accS, c->accG, c->accNew, c->accIn));
   PetscCall(SPShiftAccelDestroy(&c->accelT));
   PetscCall(PetscFree4(c->accTS, c->accTG, c->accTNew, c->accTIn));
+  PetscCall(PetscFree(c->accTSlip));
   PetscCall(VecDestroy(&c->evalX));
   PetscCall(DMDestroy(&c->dmC));
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -10,17 +10,30 @@
    [1 - rho, 1], GMRES needs a handful of products). It needs a factorization: with an iterative
    linear solver every product would be a whole Krylov solve, and the update stays the plain one.
    The Newton step's residual term is dropped: at the boundary the new iterate W = X - J^-1 F(X)
-   has F(W) = 0 up to the nonlinear remainder, which the next Newton step removes. */
+   has F(W) = 0 up to the nonlinear remainder, which the next Newton step removes.
+   A slipping point's tangential shifts are rows too: the rule s_T <- -mu p m / eps_T, m = y/|y|,
+   y = -eps_T (Dg_T + s_T), p = p(g, s_N), follows p and in 3D turns s_T towards the slip by a
+   fraction kappa = mu p/|y| < 1 of the way only, so near the stick zone's edge (kappa -> 1) F3's
+   directions converged by ~0.15 per Newton iteration. Its derivatives give the rows: u-part
+   (mu k/eps_T) m N + kappa P B_T (P = I - m m^T), on the point's own shifts I - kappa P (tangential)
+   and -(mu k/eps_T) m (normal); columns A eps_T kappa B_T^T P e_a (in 2D P = 0: no force). */
 #include <spcontact-impl.h>
+
+typedef struct {
+  PetscBool normal;    /* a normal shift, else a tangential one */
+  PetscInt  slot, off; /* slot in the shift vector, offset into dof/R/C */
+  PetscReal b;         /* the rule's change (its "gap") */
+  PetscReal coef[3];   /* M's terms on the point's own shifts (normal, tangential): slipping points */
+} SchurRow;
 
 typedef struct {
   SPContact  c;
   PetscInt   slots;       /* per point in the shift vector: the normal shift, then dim - 1 tangential */
   PetscBool  tangential;  /* the stuck points' tangential shifts are rows */
   PetscInt   nrow, ndof;  /* rows (updated shifts), their dofs (with repeats) */
-  PetscInt  *row, *off;   /* per row: slot in the shift vector, offset into dof/R/C */
+  SchurRow  *row;         /* nrow + 1 (the last: the end offset) */
   PetscInt  *dof;         /* global dofs (constrained ones dropped) */
-  PetscReal *R, *C, *b;   /* row (gap change per dof), column (force per unit shift), and per row its gap */
+  PetscReal *R, *C;       /* row (gap change per dof), column (force per unit shift) */
   Vec        F, Z, zloc;  /* global force and solution, gathered solution values */
   VecScatter gather;
   PetscBool  failed;      /* a back-substitution failed: the plain update stands */
@@ -38,17 +51,50 @@ static PetscErrorCode Element(SPContact c, PetscInt i, PetscInt *nd, PetscInt do
 }
 
 /* One row: R and C over the element's free dofs; dropped when no free dof moves its gap */
-static void AddRow(SchurCtx *x, PetscInt slot, PetscReal gap, PetscInt nd, const PetscInt dofs[], const PetscReal R[], const PetscReal C[])
+static void AddRow(SchurCtx *x, SchurRow row, PetscInt nd, const PetscInt dofs[], const PetscReal R[], const PetscReal C[])
 {
   const PetscInt start = x->ndof;
   for (PetscInt k = 0; k < nd; ++k)
     if (dofs[k] >= 0 && (R[k] != 0.0 || C[k] != 0.0)) x->dof[x->ndof] = dofs[k], x->R[x->ndof] = R[k], x->C[x->ndof++] = C[k];
   if (x->ndof == start) return;
-  x->row[x->nrow] = slot, x->off[x->nrow] = start, x->b[x->nrow++] = gap;
+  row.off          = start;
+  x->row[x->nrow++] = row;
+}
+
+/* The tangential rows of point i slipping at the rule's state (old shifts in accTS, accS): none
+   where its status is frozen by chatter or kept stuck by the branch hold, or at the cone */
+static void SlipRows(SchurCtx *x, PetscInt i, PetscInt nd, const PetscInt dofs[], PetscReal A, const PetscReal N[], const PetscReal BT[])
+{
+  SPContact             c  = x->c;
+  const SPContactPoint *pt = &c->pt[i];
+  const PetscInt        nt = c->dim - 1;
+  const PetscReal      *s  = &c->accTS[2 * i];
+  PetscReal             p, k, y[2] = {0, 0}, ny, m[2], kappa, f, R[SP_FRIC_MAXD], C[SP_FRIC_MAXD];
+
+  if (pt->st.flips > c->maxFlips || (c->holding && pt->st.held && pt->st.heldStick)) return;
+  SPContactPointTraction(c, i, &p, &k);
+  if (c->accIn[i]) p += k * (pt->st.sN - c->accS[i]); /* at the old normal shift */
+  for (PetscInt a = 0; a < nt; ++a) y[a] = -pt->epsT * (pt->geo.dgT[a] + s[a]);
+  ny = SPNorm(nt, y);
+  if (p <= 0.0 || ny <= pt->geo.mu * p) return;
+  kappa = pt->geo.mu * p / ny;
+  f     = pt->geo.mu * k / pt->epsT;
+  for (PetscInt a = 0; a < nt; ++a) m[a] = y[a] / ny;
+  for (PetscInt a = 0; a < nt; ++a) {
+    SchurRow row = {PETSC_FALSE, i * x->slots + 1 + a, 0, -pt->geo.mu * p / pt->epsT * m[a] - s[a], {-f * m[a], 0, 0}};
+    for (PetscInt b = 0; b < nt; ++b) row.coef[1 + b] = (a == b) - kappa * ((a == b) - m[a] * m[b]);
+    for (PetscInt q = 0; q < nd; ++q) {
+      PetscReal PB = 0.0;
+      for (PetscInt b = 0; b < nt; ++b) PB += ((a == b) - m[a] * m[b]) * BT[b * nd + q];
+      R[q] = f * m[a] * N[q] + kappa * PB;
+      C[q] = A * pt->epsT * kappa * PB;
+    }
+    AddRow(x, row, nd, dofs, R, C);
+  }
 }
 
 /* The rows of point i: its normal shift if the rule updated it (normal), its tangential ones if
-   it is stuck and the rule updated them (tangential) */
+   it is stuck or slips and the rule updated them (tangential) */
 static PetscErrorCode PointRows(SchurCtx *x, PetscInt i, PetscBool normal, PetscBool tangential)
 {
   SPContact       c  = x->c;
@@ -57,11 +103,12 @@ static PetscErrorCode PointRows(SchurCtx *x, PetscInt i, PetscBool normal, Petsc
   PetscReal       A, N[SP_FRIC_MAXD], BT[2 * SP_FRIC_MAXD], C[SP_FRIC_MAXD], y[2], t[2], nt2;
   PetscBool       tangent, stick = PETSC_TRUE;
   const PetscBool rowN = normal && c->accIn[i] && SPContactPointActive(c, i) ? PETSC_TRUE : PETSC_FALSE;
+  const PetscBool rowS = tangential && c->accTSlip[i] ? PETSC_TRUE : PETSC_FALSE;
   PetscBool       rowT = PETSC_FALSE;
 
   PetscFunctionBeginUser;
   for (PetscInt a = 0; a < nt && tangential; ++a) rowT = rowT || c->accTIn[2 * i + a];
-  if (!rowN && !rowT) PetscFunctionReturn(PETSC_SUCCESS);
+  if (!rowN && !rowT && !rowS) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(Element(c, i, &nd, dofs, &A, N, BT, &tangent));
   if (!nd) PetscFunctionReturn(PETSC_SUCCESS);
   if (tangent) SPFrictionTraction(c, i, y, t, &stick);
@@ -71,13 +118,14 @@ static PetscErrorCode PointRows(SchurCtx *x, PetscInt i, PetscBool normal, Petsc
       C[k] = A * c->pt[i].eps * N[k];
       for (PetscInt a = 0; a < nt && !stick && nt2 > 0.0; ++a) C[k] += A * c->pt[i].eps * c->pt[i].geo.mu * BT[a * nd + k] * t[a] / nt2;
     }
-    AddRow(x, i * x->slots, c->pt[i].geo.gap, nd, dofs, N, C);
+    AddRow(x, (SchurRow){PETSC_TRUE, i * x->slots, 0, c->pt[i].geo.gap, {0, 0, 0}}, nd, dofs, N, C);
   }
   for (PetscInt a = 0; a < nt && tangent && rowT; ++a) {
     if (!c->accTIn[2 * i + a]) continue;
     for (PetscInt k = 0; k < nd; ++k) C[k] = A * c->pt[i].epsT * BT[a * nd + k];
-    AddRow(x, i * x->slots + 1 + a, c->accTG[2 * i + a], nd, dofs, &BT[a * nd], C);
+    AddRow(x, (SchurRow){PETSC_FALSE, i * x->slots + 1 + a, 0, c->accTG[2 * i + a], {0, 0, 0}}, nd, dofs, &BT[a * nd], C);
   }
+  if (rowS && tangent && !stick) SlipRows(x, i, nd, dofs, A, N, BT);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -86,10 +134,10 @@ static PetscErrorCode Rows(SchurCtx *x, PetscBool normal, PetscBool tangential)
   const PetscInt n = x->c->n * x->slots;
 
   PetscFunctionBeginUser;
-  PetscCall(PetscMalloc3(n + 1, &x->row, n + 1, &x->off, n + 1, &x->b));
+  PetscCall(PetscMalloc1(n + 1, &x->row));
   PetscCall(PetscMalloc3(n * SP_FRIC_MAXD + 1, &x->dof, n * SP_FRIC_MAXD + 1, &x->R, n * SP_FRIC_MAXD + 1, &x->C));
   for (PetscInt i = 0; i < x->c->n; ++i) PetscCall(PointRows(x, i, normal, tangential));
-  x->off[x->nrow] = x->ndof;
+  x->row[x->nrow].off = x->ndof;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -121,7 +169,7 @@ static PetscErrorCode Mult(Mat M, Vec X, Vec Y)
   PetscCall(VecZeroEntries(x->F));
   PetscCall(VecGetArrayRead(X, &xa));
   for (PetscInt r = 0; r < x->nrow; ++r)
-    for (PetscInt k = x->off[r]; k < x->off[r + 1]; ++k) PetscCall(VecSetValue(x->F, x->dof[k], x->C[k] * xa[x->row[r]], ADD_VALUES));
+    for (PetscInt k = x->row[r].off; k < x->row[r + 1].off; ++k) PetscCall(VecSetValue(x->F, x->dof[k], x->C[k] * xa[x->row[r].slot], ADD_VALUES));
   PetscCall(VecAssemblyBegin(x->F));
   PetscCall(VecAssemblyEnd(x->F));
   PetscCall(x->c->jsolve(x->c->jctx, x->F, x->Z, &ok));
@@ -136,9 +184,11 @@ static PetscErrorCode Mult(Mat M, Vec X, Vec Y)
   PetscCall(VecGetArray(Y, &ya));
   for (PetscInt i = 0; i < x->c->n * x->slots; ++i) ya[i] = xa[i];
   for (PetscInt r = 0; r < x->nrow; ++r) {
-    PetscReal dg = 0.0;
-    for (PetscInt k = x->off[r]; k < x->off[r + 1]; ++k) dg += x->R[k] * PetscRealPart(z[k]);
-    ya[x->row[r]] = dg;
+    const PetscInt base = x->row[r].slot - x->row[r].slot % x->slots;
+    PetscReal      dg   = 0.0;
+    for (PetscInt q = 0; q < x->slots; ++q) dg += x->row[r].coef[q] * PetscRealPart(xa[base + q]);
+    for (PetscInt k = x->row[r].off; k < x->row[r + 1].off; ++k) dg += x->R[k] * PetscRealPart(z[k]);
+    ya[x->row[r].slot] = dg;
   }
   PetscCall(VecRestoreArray(Y, &ya));
   PetscCall(VecRestoreArrayRead(x->zloc, &z));
@@ -149,7 +199,7 @@ static PetscErrorCode Mult(Mat M, Vec X, Vec Y)
 static PetscErrorCode Destroy(SchurCtx *x)
 {
   PetscFunctionBeginUser;
-  PetscCall(PetscFree3(x->row, x->off, x->b));
+  PetscCall(PetscFree(x->row));
   PetscCall(PetscFree3(x->dof, x->R, x->C));
   PetscCall(VecDestroy(&x->F));
   PetscCall(VecDestroy(&x->Z));
@@ -174,7 +224,7 @@ static PetscErrorCode SolveShift(SchurCtx *x, Vec d, PetscInt *its, PetscBool *o
   PetscCall(VecDuplicate(d, &b));
   PetscCall(VecZeroEntries(b));
   PetscCall(VecGetArray(b, &ba));
-  for (PetscInt r = 0; r < x->nrow; ++r) ba[x->row[r]] = x->b[r];
+  for (PetscInt r = 0; r < x->nrow; ++r) ba[x->row[r].slot] = x->row[r].b;
   PetscCall(VecRestoreArray(b, &ba));
   PetscCall(MatCreateShell(comm, c->n * x->slots, c->n * x->slots, PETSC_DETERMINE, PETSC_DETERMINE, x, &M));
   PetscCall(MatShellSetOperation(M, MATOP_MULT, (void (*)(void))Mult));
@@ -206,8 +256,7 @@ static PetscErrorCode CanSolve(SPContact c, PetscBool *ok)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* The new shifts from d: normal s_N = min(0, s + d), tangential s_T = s + d then the cone's clip.
-   *maxDs (this rank's) and *dsT (collective) grow to the largest changes. */
+/* The new shifts from d: normal s_N = min(0, s + d), tangential s_T = s + d, then the cone's clip. *maxDs (this rank's) and *dsT (collective) grow to the largest changes. */
 static PetscErrorCode Apply(SchurCtx *x, Vec d, PetscReal *maxDs, PetscReal *dsT)
 {
   SPContact          c  = x->c;
@@ -218,17 +267,19 @@ static PetscErrorCode Apply(SchurCtx *x, Vec d, PetscReal *maxDs, PetscReal *dsT
   PetscFunctionBeginUser;
   PetscCall(VecGetArrayRead(d, &da));
   for (PetscInt r = 0; r < x->nrow; ++r) {
-    const PetscInt i = x->row[r] / x->slots, a = x->row[r] % x->slots - 1;
-    if (a < 0) c->pt[i].st.sN = PetscMin(0.0, c->accS[i] + PetscRealPart(da[x->row[r]]));
-    else c->pt[i].st.sT[a] = c->accTS[2 * i + a] + PetscRealPart(da[x->row[r]]);
+    const PetscInt  i = x->row[r].slot / x->slots, a = x->row[r].slot % x->slots - 1;
+    const PetscReal v = PetscRealPart(da[x->row[r].slot]);
+    if (x->row[r].normal) c->pt[i].st.sN = PetscMin(0.0, c->accS[i] + v);
+    else c->pt[i].st.sT[a] = c->accTS[2 * i + a] + v;
   }
   PetscCall(VecRestoreArrayRead(d, &da));
   for (PetscInt r = 0; r < x->nrow; ++r) {
-    const PetscInt i = x->row[r] / x->slots;
-    PetscReal      ds[2] = {0, 0};
+    const PetscInt  i     = x->row[r].slot / x->slots;
+    const PetscBool moved = x->tangential && (c->accTIn[2 * i] || c->accTIn[2 * i + 1] || !x->row[r].normal);
+    PetscReal       ds[2] = {0, 0};
     if (c->friction) SPFrictionClipShift(c, i);
     *maxDs = PetscMax(*maxDs, PetscAbsReal(c->pt[i].st.sN - c->accS[i]));
-    for (PetscInt a = 0; a < nt && x->tangential && c->accTIn[2 * i + a]; ++a) ds[a] = c->pt[i].st.sT[a] - c->accTS[2 * i + a];
+    for (PetscInt a = 0; a < nt && moved; ++a) ds[a] = c->pt[i].st.sT[a] - c->accTS[2 * i + a];
     dT = PetscMax(dT, SPNorm(nt, ds));
   }
   PetscCallMPI(MPI_Allreduce(&dT, &all, 1, MPIU_REAL, MPI_MAX, PetscObjectComm((PetscObject)c->dm)));
