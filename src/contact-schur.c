@@ -251,7 +251,7 @@ static PetscErrorCode CanSolve(SPContact c, PetscBool *ok)
   PetscFunctionBeginUser;
   *ok = PETSC_FALSE;
   if (c->jsolve) PetscCall(c->jsolve(c->jctx, NULL, NULL, ok));
-  if (!*ok && !c->schurSaid) PetscCall(PetscPrintf(PetscObjectComm((PetscObject)c->dm), "shift update: -contact_shift_accel schur back-substitutes with a factorization (-pc_type lu or cholesky); while the linear solver has none, the update is the plain one\n"));
+  if (!*ok && !c->schurSaid) PetscCall(PetscPrintf(PetscObjectComm((PetscObject)c->dm), "shift update: -contact_shift_accel schur back-substitutes with a factorization (for example -ksp_type preonly -pc_type lu -pc_factor_mat_solver_type mumps); while the linear solver has none, the update is the plain one\n"));
   if (!*ok) c->schurSaid = PETSC_TRUE;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
