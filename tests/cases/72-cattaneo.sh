@@ -292,9 +292,9 @@ test_cattaneo3d_alpha1000_cycle_message() {
 }
 
 # F2 with the Schur shift update (-contact_shift_accel schur: normal rows of the active points,
-# tangential rows of the stuck ones, back-substitutions with the 2D factorization): the F2 figures,
+# tangential rows of the stuck and slipping ones, back-substitutions with the 2D factorization): the F2 figures,
 # the plain update's traction L2 error to 1e-4, on 1 and 2 ranks with the same figures; Newton
-# iterations measured 63 against the plain update's 109 and penalty's 46, asserted <= 70
+# iterations measured 62 against the plain update's 109 and penalty's 46, asserted <= 70
 test_cattaneo2d_schur() {
   local rc=0 np
   for np in 1 2; do
