@@ -283,7 +283,7 @@ struct _n_SPContact {
   SPShiftAccel    accelT;    /* the same for the tangential shifts of stuck points (2 slots per point) */
   PetscReal      *accTS, *accTG, *accTNew;
   PetscBool      *accTIn;
-  PetscBool      *accTSlip;  /* schur: slipping points the tangential rule updated (accTS: their old shifts) */
+  PetscBool      *accTSlip;  /* schur only (else NULL): slipping points the tangential rule updated (accTS: their old shifts) */
   PetscInt        schurSteps, schurSolves; /* -contact_shift_accel schur: updates, back-substitutions (contact-schur.c) */
   PetscBool       schurSaid;               /* it said once that it has no factorization to use */
   PetscErrorCode (*jsolve)(void *, Vec, Vec, PetscBool *); /* solve with the last Newton step's Jacobian (NULL vectors: ask whether it can) */

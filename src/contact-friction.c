@@ -459,7 +459,8 @@ PetscErrorCode SPFrictionUpdate(SPContact c, PetscBool mayHold, PetscReal *maxDs
     SPContactPoint *pt = &c->pt[i];
     PetscReal       y[2], t[2], old[2] = {pt->st.sT[0], pt->st.sT[1]}, lam, ds;
     PetscBool       stick = PETSC_TRUE, rule = PETSC_FALSE, activeNow = SPContactPointActive(c, i);
-    if (c->accTIn) c->accTIn[2 * i] = c->accTIn[2 * i + 1] = c->accTSlip[i] = PETSC_FALSE;
+    if (c->accTIn) c->accTIn[2 * i] = c->accTIn[2 * i + 1] = PETSC_FALSE;
+    if (c->accTSlip) c->accTSlip[i] = PETSC_FALSE;
     if (pt->geo.mu <= 0.0) continue;
     if (activeNow && pt->st.active) {
       SPFrictionTraction(c, i, y, t, &stick);
@@ -471,7 +472,7 @@ PetscErrorCode SPFrictionUpdate(SPContact c, PetscBool mayHold, PetscReal *maxDs
         for (PetscInt a = 0; a < nt; ++a) pt->st.sT[a] = -t[a] / pt->epsT + (stick ? SPDot(c->dim, pt->st.creep, pt->st.T[a]) : 0.0);
       rule = stick && creepHolds ? PETSC_FALSE : PETSC_TRUE;
     } else if (!activeNow) pt->st.sT[0] = pt->st.sT[1] = 0.0;
-    if (c->accTIn && !c->accelT && rule && !stick) { /* Schur: the old shift of a slipping point (its direction's update is a row) */
+    if (c->accTSlip && rule && !stick) { /* Schur: the old shift of a slipping point (its direction's update is a row) */
       c->accTSlip[i] = PETSC_TRUE;
       for (PetscInt a = 0; a < nt; ++a) c->accTS[2 * i + a] = old[a];
     }

@@ -127,8 +127,8 @@ PetscErrorCode SPContactPointsSetUp(SPContact c, DMLabel slave)
   if (c->params.accel != SP_ACCEL_NONE) {
     PetscCall(PetscCalloc4(c->n + 1, &c->accS, c->n + 1, &c->accG, c->n + 1, &c->accNew, c->n + 1, &c->accIn));
     PetscCall(PetscCalloc4(2 * c->n + 1, &c->accTS, 2 * c->n + 1, &c->accTG, 2 * c->n + 1, &c->accTNew, 2 * c->n + 1, &c->accTIn));
-    PetscCall(PetscCalloc1(c->n + 1, &c->accTSlip));
   }
+  if (c->params.accel == SP_ACCEL_SCHUR) PetscCall(PetscCalloc1(c->n + 1, &c->accTSlip));
   if (c->params.accel == SP_ACCEL_ANDERSON) {
     PetscCall(SPShiftAccelCreate(PetscObjectComm((PetscObject)c->dm), c->n, c->params.accelDepth, &c->accel));
     PetscCall(SPShiftAccelCreate(PetscObjectComm((PetscObject)c->dm), 2 * c->n, c->params.accelDepth, &c->accelT));

@@ -29,7 +29,7 @@ typedef struct {
 typedef struct {
   SPContact  c;
   PetscInt   slots;       /* per point in the shift vector: the normal shift, then dim - 1 tangential */
-  PetscBool  tangential;  /* the stuck points' tangential shifts are rows */
+  PetscBool  tangential;  /* the stuck and slipping points' tangential shifts are rows */
   PetscInt   nrow, ndof;  /* rows (updated shifts), their dofs (with repeats) */
   SchurRow  *row;         /* nrow + 1 (the last: the end offset) */
   PetscInt  *dof;         /* global dofs (constrained ones dropped) */

@@ -142,7 +142,7 @@ test_schur_neohookean() {
 # 3D friction (F3 in 5 load steps as cattaneo3d_f3_shifted, MUMPS LU): the stuck points'
 # tangential shifts and the slipping points' (which follow p and turn towards the slip by
 # kappa = mu p/|y| < 1 of the way per plain update) are rows. Within penalty + 3 Newton iterations
-# per load step (measured 47 against penalty's 36; with only the stuck points' rows 60), the stick
+# per load step (measured 47 against penalty's 36; with only the stuck points' rows 59), the stick
 # radius within one element, creep <= 1e-10 h, Q/F = 0.15 to 1e-8, and the same figures (1e-8) and
 # Newton iterations on 2 ranks. About 5 minutes.
 test_schur_friction3d() {
