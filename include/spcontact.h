@@ -106,6 +106,7 @@ PETSC_EXTERN PetscBool      SPContactTangentFixed(SPContact);
 PETSC_EXTERN PetscErrorCode SPContactGetActiveChanges(SPContact, PetscInt *, PetscInt *);
 PETSC_EXTERN PetscErrorCode SPContactGetShiftContraction(SPContact, PetscReal *);
 PETSC_EXTERN PetscErrorCode SPContactGetUpdateForce(SPContact, PetscReal *);
+PETSC_EXTERN PetscErrorCode SPContactGetRoundOffForce(SPContact, PetscReal *);
 PETSC_EXTERN PetscErrorCode SPContactStepFeedsUpdate(SPContact, Vec, PetscBool *);
 PETSC_EXTERN PetscErrorCode SPContactCommitStep(SPContact, Vec);
 PETSC_EXTERN PetscErrorCode SPContactPredictRecord(SPContact);

@@ -271,6 +271,28 @@ test_units_roundoff_floor_f1a_alpha1000() {
   return $rc
 }
 
+# A load small against E: F1b (friction_slide2d, full slip: T = mu N) at 1e-4 of its load (strain
+# about 1e-6, steel under 0.2 MPa). The relative residual target (1e-10 of the first residual,
+# 1.6e-17) lies below what the coordinates' round-off leaves in the contact forces (|F| ~ 2e-15),
+# so every step stalled into the cut-back floor (QA helper 23, with every method). The round-off
+# floor now counts that residual: converged without a cut-back, T = -mu N and N to 1e-8, the same
+# figures on 2 ranks
+test_units_small_load_friction() {
+  local rc=0 m np out
+  for m in penalty shifted alm; do
+    for np in 1 2; do
+      out=$CASE_DIR/${m}_np$np.txt
+      spc "$out" "$np" -options_file input/friction_slide2d.opts -bc_0_value 1e-6 -bc_1_value 2e-6 -contact_method $m -output_dir "$CASE_DIR" -output_name "${m}_np$np" -output_fields false || { echo "$m np $np: run failed"; rc=1; continue; }
+      assert_eq "converged_${m}_np$np" "$(sval "$out" converged)" yes || rc=1
+      assert_eq "cutbacks_${m}_np$np" "$(sval "$out" cutbacks)" 0 || rc=1
+      assert_close "normal_force_${m}_np$np" "$(sval "$out" contact_force_y)" 1e-6 1e-8 || rc=1
+      assert_close "tangential_force_${m}_np$np" "$(sval "$out" contact_force_x)" -3e-7 1e-8 || rc=1
+    done
+    same_summary "$CASE_DIR/${m}_np1.txt" "$CASE_DIR/${m}_np2.txt" 1e-8 contact_force_x contact_force_y || rc=1
+  done
+  return $rc
+}
+
 # An alm re-solve after an augmentation takes at least one Newton step: with -contact_gap_rtol
 # 1e-13 on B2 the augmentation's force change falls below the residual target, and a re-solve
 # that stopped at once left the gap where it was (13 cut-backs, 593 Newton iterations, not

@@ -33,6 +33,9 @@ alpha zero|input/hertz2d.opts|-contact_alpha 0
 alpha nan|input/hertz2d.opts|-contact_alpha nan
 alpha 1e20|input/hertz2d.opts|-contact_alpha 1e20
 friction alpha 1e-6|input/friction_block2d.opts|-contact_friction_alpha 1e-6
+friction alpha negative (was taken as not given)|input/friction_block2d.opts|-contact_friction_alpha -5
+friction max flips 0|input/friction_slide2d.opts|-contact_friction_max_flips 0
+friction max flips negative|input/friction_slide2d.opts|-contact_friction_max_flips -1
 2D obstacle normal on a 3D mesh|input/hertz3d.opts|-contact_obstacle_0_normal 0,1
 1-component obstacle normal on a 3D mesh|input/hertz3d.opts|-contact_obstacle_0_normal 1
 3D obstacle point on a 2D mesh|input/hertz2d.opts|-contact_obstacle_0_point 0,0,0
