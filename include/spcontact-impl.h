@@ -155,6 +155,7 @@ typedef struct {
   PetscBool freeSide[SP_FACET_MAXV];    /* side s (2D: vertex s; 3D: edge s -> s+1) belongs to no other master facet of the pair */
   PetscReal X[SP_FACET_MAXV * 3];       /* reference coordinates */
   PetscReal x[SP_FACET_MAXV * 3];       /* deformed coordinates at the last evaluation */
+  PetscReal u[SP_FACET_MAXV * 3];       /* their displacements (x - X without X's round-off: friction's slip) */
 } SPMasterFacet;
 
 /* element kinds of a contact point (geo.elem >= 0: a master facet) */
@@ -171,6 +172,7 @@ typedef struct {
   PetscInt  elem;          /* master facet (index into c->mf), SP_ELEM_OBSTACLE or SP_ELEM_NONE */
   PetscInt  obstacle;      /* elem == SP_ELEM_OBSTACLE: which obstacle */
   PetscReal x[3];          /* deformed slave position */
+  PetscReal u[3];          /* its displacement (x - X without X's round-off: friction's slip) */
   PetscReal xi[2];         /* local coordinates of the projection on the master facet */
   PetscReal gap;           /* normal gap (< 0: penetration) */
   PetscReal normal[3];     /* unit normal, pointing from the master (obstacle) to the slave */

@@ -75,7 +75,7 @@ static PetscBool AnchorDisplacement(SPContact c, PetscInt i, PetscReal um[])
     if (f < 0) return PETSC_FALSE;
     FacetShape(dim, c->mf[f].nv, pt->st.anchorXi, N);
     for (PetscInt a = 0; a < c->mf[f].nv; ++a)
-      for (PetscInt d = 0; d < dim; ++d) um[d] += N[a] * (c->mf[f].x[a * dim + d] - c->mf[f].X[a * dim + d]);
+      for (PetscInt d = 0; d < dim; ++d) um[d] += N[a] * c->mf[f].u[a * dim + d];
     return PETSC_TRUE;
   }
 }
@@ -96,7 +96,7 @@ void SPFrictionKinematics(SPContact c, PetscInt i)
     pt->geo.anchorLost = PETSC_TRUE;
     return;
   }
-  for (PetscInt k = 0; k < dim; ++k) d[k] = (pt->geo.x[k] - pt->X[k] - pt->st.us[k]) - (um[k] - pt->st.um[k]);
+  for (PetscInt k = 0; k < dim; ++k) d[k] = (pt->geo.u[k] - pt->st.us[k]) - (um[k] - pt->st.um[k]);
   for (PetscInt a = 0; a < dim - 1; ++a) pt->geo.dgT[a] = SPDot(dim, pt->st.T[a], d);
 }
 
@@ -278,7 +278,7 @@ static void AnchorPoint(SPContact c, PetscInt i, const PetscReal tg[], PetscBool
   st->anchor = e == SP_ELEM_OBSTACLE ? -(pt->geo.obstacle + 1) : c->mf[e].gid;
   st->anchorXi[0] = pt->geo.xi[0], st->anchorXi[1] = pt->geo.xi[1];
   for (PetscInt d = 0; d < 3; ++d) {
-    st->us[d] = d < dim ? pt->geo.x[d] - pt->X[d] : 0.0;
+    st->us[d] = d < dim ? pt->geo.u[d] : 0.0;
     if (keep) continue;
     st->n[d] = pt->geo.normal[d];
     for (PetscInt a = 0; a < 2; ++a) st->T[a][d] = pt->geo.tangent[a][d];

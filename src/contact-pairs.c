@@ -203,7 +203,7 @@ static PetscErrorCode OwnedFacets(SPContact c, PetscInt *nown, SPMasterFacet **o
         PetscCall(PetscSectionGetOffset(gsC, vert[a], &off));
         m->cp[a] = dof > 0 ? off : (dof < -1 ? -(off + 1) : -1); /* global section: ghosts store -(x+1) */
         tv[n * SP_FACET_MAXV + a] = vert[a];
-        for (PetscInt d = 0; d < dim; ++d) m->x[a * dim + d] = m->X[a * dim + d];
+        for (PetscInt d = 0; d < dim; ++d) m->x[a * dim + d] = m->X[a * dim + d], m->u[a * dim + d] = 0.0;
       }
       n++;
     }
@@ -424,7 +424,7 @@ PetscErrorCode SPContactPairsExchange(SPContact c, const PetscScalar u[])
     for (PetscInt a = 0; a < m->nv; ++a) {
       PetscInt off;
       PetscCall(PetscSectionGetOffset(ls, c->mfVert[j * SP_FACET_MAXV + a], &off));
-      for (PetscInt d = 0; d < dim; ++d) m->x[a * dim + d] = m->X[a * dim + d] + PetscRealPart(u[off + d]);
+      for (PetscInt d = 0; d < dim; ++d) m->u[a * dim + d] = PetscRealPart(u[off + d]), m->x[a * dim + d] = m->X[a * dim + d] + m->u[a * dim + d];
     }
   }
   SlaveBox(c, box);

@@ -29,7 +29,7 @@ PetscErrorCode SPContactSearch(SPContact c, const PetscScalar u[], PetscReal loa
   for (PetscInt i = 0; i < c->n; ++i) {
     PetscInt off;
     PetscCall(PetscSectionGetOffset(ls, c->pt[i].vertex, &off));
-    for (PetscInt d = 0; d < c->dim; ++d) c->pt[i].geo.x[d] = c->pt[i].X[d] + PetscRealPart(u[off + d]);
+    for (PetscInt d = 0; d < c->dim; ++d) c->pt[i].geo.u[d] = PetscRealPart(u[off + d]), c->pt[i].geo.x[d] = c->pt[i].X[d] + c->pt[i].geo.u[d];
   }
   if (c->npair) PetscCall(SPContactPairsExchange(c, u));
   for (PetscInt i = 0; i < c->n; ++i) {

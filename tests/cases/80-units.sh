@@ -293,6 +293,27 @@ test_units_small_load_friction() {
   return $rc
 }
 
+# A mesh far from the origin: a slip was the current position minus the reference one, which lost
+# machine epsilon x |X| (1e-13 at x = 1000, above the slip test's 7.5e-14): F1b moved to x = 1000
+# stopped after 9 cut-backs, at 1e6 at load 0 (QA helper 23). Slips now come from the displacements:
+# at 1000 and 1e6 the same Newton iterations and T = -mu N, N to 1e-8 as at the origin, 1 and 2 ranks
+test_units_friction_far_from_origin() {
+  local rc=0 x np out base
+  base=$CASE_DIR/x0_np1.txt
+  for x in 0 1000 1000000; do
+    for np in 1 2; do
+      [ $x = 0 ] && [ $np = 2 ] && continue
+      out=$CASE_DIR/x${x}_np$np.txt
+      spc "$out" "$np" -options_file input/friction_slide2d.opts -dm_plex_box_lower $x,0 -dm_plex_box_upper $((x + 1)),0.5 -output_dir "$CASE_DIR" -output_name "x${x}_np$np" -output_fields false || { echo "x $x np $np: run failed"; rc=1; continue; }
+      assert_eq "cutbacks_x${x}_np$np" "$(sval "$out" cutbacks)" 0 || rc=1
+      assert_close "normal_force_x${x}_np$np" "$(sval "$out" contact_force_y)" 0.01 1e-8 || rc=1
+      assert_close "tangential_force_x${x}_np$np" "$(sval "$out" contact_force_x)" -0.003 1e-8 || rc=1
+      assert_eq "newton_x${x}_np$np" "$(sval "$out" newton_iterations)" "$(sval "$base" newton_iterations)" || rc=1
+    done
+  done
+  return $rc
+}
+
 # An alm re-solve after an augmentation takes at least one Newton step: with -contact_gap_rtol
 # 1e-13 on B2 the augmentation's force change falls below the residual target, and a re-solve
 # that stopped at once left the gap where it was (13 cut-backs, 593 Newton iterations, not
