@@ -100,6 +100,7 @@ PETSC_EXTERN PetscErrorCode SPContactHasPairs(SPContact, PetscBool *);
 PETSC_EXTERN PetscErrorCode SPContactShiftsInNewton(SPContact, PetscBool *);
 PETSC_EXTERN PetscErrorCode SPContactUpdatesShifts(SPContact, PetscBool *);
 PETSC_EXTERN PetscErrorCode SPContactGetAccelSteps(SPContact, PetscInt *);
+PETSC_EXTERN PetscErrorCode SPContactGetGapTolerance(SPContact, PetscReal *, PetscBool *);
 PETSC_EXTERN void           SPContactSetJacobianSolve(SPContact, PetscErrorCode (*)(void *, Vec, Vec, PetscBool *), void *);
 PETSC_EXTERN PetscErrorCode SPContactGetActiveVersion(SPContact, PetscInt *);
 PETSC_EXTERN PetscBool      SPContactTangentFixed(SPContact);

@@ -677,6 +677,16 @@ PetscErrorCode SPContactShiftsInNewton(SPContact c, PetscBool *on)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The gap tolerance in use, and whether the shift update is the plain one (no -contact_shift_accel):
+   what a stalled solve's advice depends on */
+PetscErrorCode SPContactGetGapTolerance(SPContact c, PetscReal *gapTol, PetscBool *plain)
+{
+  PetscFunctionBeginUser;
+  *gapTol = c && c->enabled ? c->gapTol : 0.0;
+  *plain  = c && c->enabled && c->params.accel == SP_ACCEL_NONE ? PETSC_TRUE : PETSC_FALSE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* Accelerated shift updates of the run (a restarted run's included) */
 PetscErrorCode SPContactGetAccelSteps(SPContact c, PetscInt *steps)
 {

@@ -60,7 +60,7 @@ static PetscErrorCode ObstacleSetFromOptions(MPI_Comm comm, PetscInt i, PetscInt
 {
   char      prefix[48];
   PetscInt  type = 0, n;
-  PetscBool set;
+  PetscBool set, setR = PETSC_FALSE;
   PetscReal len;
 
   PetscFunctionBeginUser;
@@ -79,7 +79,7 @@ static PetscErrorCode ObstacleSetFromOptions(MPI_Comm comm, PetscInt i, PetscInt
     PetscCall(CheckVector(comm, prefix, "normal", dim, set, n, ob->normal));
   }
   if (type != SP_OBSTACLE_PLANE || PetscOptionsObject->printhelp) /* a plane has none: reported unused */
-    PetscCall(PetscOptionsReal("-radius", "Sphere/cylinder radius > 0", "SPContactSetFromOptions", ob->radius, &ob->radius, NULL));
+    PetscCall(PetscOptionsReal("-radius", "Sphere/cylinder radius > 0", "SPContactSetFromOptions", ob->radius, &ob->radius, &setR));
   n = 3;
   PetscCall(PetscOptionsRealArray("-motion", "Rigid displacement of the obstacle at load factor 1", "SPContactSetFromOptions", ob->motion, &n, &set));
   PetscCall(CheckVector(comm, prefix, "motion", dim, set, n, ob->motion));
@@ -90,6 +90,7 @@ static PetscErrorCode ObstacleSetFromOptions(MPI_Comm comm, PetscInt i, PetscInt
   len      = SPNorm(dim, ob->normal);
   PetscCheck(len > 0.0, comm, PETSC_ERR_USER_INPUT, "-%snormal: the normal/axis must be a nonzero vector", prefix);
   for (PetscInt d = 0; d < dim; ++d) ob->normal[d] /= len;
+  if (ob->type != SP_OBSTACLE_PLANE) PetscCheck(setR, comm, PETSC_ERR_USER_INPUT, "-%sradius missing: a %s needs one (give -%sradius R, R > 0)", prefix, ObstacleTypes[type], prefix);
   if (ob->type != SP_OBSTACLE_PLANE) PetscCheck(ob->radius > 0.0, comm, PETSC_ERR_USER_INPUT, "-%sradius %.6g: a %s needs a radius > 0", prefix, (double)ob->radius, ObstacleTypes[type]);
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -397,8 +397,14 @@ static PetscErrorCode CheckStall(SPSolver s, PetscInt it, PetscReal fnorm, SNESC
   /* frictionless, a settled active set whose gap error no longer falls: the shift updates contract
      too slowly (redundant constraints: two-pass with the plain update at low alpha) */
   else {
+    PetscReal gapTol;
+    PetscBool plain;
     PetscCall(SPContactShiftsInNewton(s->contact, &on));
-    if (on && !friction) PetscCall(PetscPrintf(PetscObjectComm((PetscObject)s->dm), "solve stalled: the active set changed in only %" PetscInt_FMT " of those iterations, so the shift updates no longer reduce the gap error: use -contact_shift_accel anderson (the default with -contact_two_pass) or a larger -contact_alpha\n", s->cycling));
+    PetscCall(SPContactGetGapTolerance(s->contact, &gapTol, &plain));
+    /* the gaps hold and the residual does not fall: not the shift updates (QA helper 23: a block
+       held tangentially by nothing, the frictionless patch with shear tractions) */
+    if (on && s->bestGap <= gapTol) PetscCall(PetscPrintf(PetscObjectComm((PetscObject)s->dm), "solve stalled with the gaps closed (gap error %.3e <= its tolerance %.3e): the residual does not fall below %.3e; either the residual tolerances ask for less than its round-off (loosen -snes_atol / -snes_rtol) or a body is not held against rigid motion (give it a Dirichlet condition, or friction where only contact holds it)\n", (double)s->bestGap, (double)gapTol, (double)s->bestF));
+    else if (on && !friction) PetscCall(PetscPrintf(PetscObjectComm((PetscObject)s->dm), "solve stalled: the active set changed in only %" PetscInt_FMT " of those iterations, so the shift updates no longer reduce the gap error: %s\n", s->cycling, plain ? "use -contact_shift_accel anderson (the default with -contact_two_pass) or a larger -contact_alpha" : "use a larger -contact_alpha"));
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -314,6 +314,18 @@ test_units_friction_far_from_origin() {
   return $rc
 }
 
+# A stall with the gaps closed says so and names the residual tolerances and rigid motion, not
+# the shift update (QA helper 23: the advice to use Anderson came with Anderson on and the gaps
+# closed): B2 asked for a residual below its round-off (-snes_atol 1e-30 -snes_rtol 1e-30)
+test_units_stall_gaps_closed() {
+  local out=$CASE_DIR/out.txt rc=0
+  spc "$out" 1 -options_file input/hertz2d.opts -snes_atol 1e-30 -snes_rtol 1e-30 -snes_stol 0 -load_max_cutbacks 0 -output_dir "$CASE_DIR" -output_fields false && { echo "an unreachable residual tolerance converged"; rc=1; }
+  grep -E "^solve stalled" "$out"
+  assert_ge gaps_closed_lines "$(grep -c '^solve stalled with the gaps closed (gap error .* <= its tolerance .*): the residual does not fall below .*; either the residual tolerances ask for less than its round-off (loosen -snes_atol / -snes_rtol) or a body is not held against rigid motion' "$out")" 1 || rc=1
+  assert_eq no_anderson_advice "$(grep -c 'shift_accel anderson' "$out")" 0 || rc=1
+  return $rc
+}
+
 # An alm re-solve after an augmentation takes at least one Newton step: with -contact_gap_rtol
 # 1e-13 on B2 the augmentation's force change falls below the residual target, and a re-solve
 # that stopped at once left the gap where it was (13 cut-backs, 593 Newton iterations, not

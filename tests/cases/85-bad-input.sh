@@ -43,6 +43,7 @@ obstacle motion with 2 components on a 3D mesh|input/indent3d.opts|-contact_obst
 obstacle point not a number|input/hertz2d.opts|-contact_obstacle_0_point 0,nan
 zero obstacle normal|input/hertz2d.opts|-contact_obstacle_0_normal 0,0
 negative sphere radius|input/hertz2d.opts|-contact_obstacle_0_type sphere -contact_obstacle_0_radius -1
+sphere without a radius (said missing, not -1)|input/hertz2d.opts|-contact_obstacle_0_type sphere
 unknown obstacle type|input/hertz2d.opts|-contact_obstacle_0_type cone
 unknown method (typo)|input/hertz2d.opts|-contact_method shifty
 E negative|input/hertz2d.opts|-material_E -1
