@@ -632,13 +632,13 @@ PetscErrorCode SPContactGetUpdateForce(SPContact c, PetscReal *fnext)
 /* The residual the coordinates' round-off alone can leave: a gap or a slip is a difference of
    positions, so it carries about machine epsilon x |X| (X the contact point's position; + h for a
    point at the origin), and each point's force eps A (or eps_T A) times that; summed over the
-   points in 2-norm. A run whose load is small against E (friction_slide2d at 1e-4 of its load:
-   |F| stays at 2e-15 against a target of 1.6e-17, every step stalled into the cut-back floor), or
-   whose mesh sits far from the origin, has its residual floor there, whatever the load. 0
-   without contact. Collective. */
+   points in 2-norm (an upper estimate: friction's slips come from the displacements, without X's
+   round-off). A run whose load is small against E (friction_slide2d at 1e-4 of its load: |F|
+   stayed at 2e-15 against a target of 1.6e-17, every step stalled into the cut-back floor) has
+   its residual floor there, whatever the load. 0 without contact. Collective. */
 PetscErrorCode SPContactGetRoundOffForce(SPContact c, PetscReal *fro)
 {
-  PetscReal loc[2] = {0.0, 0.0}, all[2];
+  PetscReal loc = 0.0;
 
   PetscFunctionBeginUser;
   *fro = 0.0;
@@ -646,11 +646,10 @@ PetscErrorCode SPContactGetRoundOffForce(SPContact c, PetscReal *fro)
   for (PetscInt i = 0; i < c->n; ++i) {
     const SPContactPoint *pt = &c->pt[i];
     const PetscReal       f  = PETSC_MACHINE_EPSILON * (SPNorm(c->dim, pt->X) + pt->h) * PetscMax(pt->eps, pt->epsT) * pt->area;
-    loc[0] += f * f;
+    loc += f * f;
   }
-  loc[1] = (PetscReal)c->n;
-  PetscCallMPI(MPI_Allreduce(loc, all, 2, MPIU_REAL, MPI_SUM, PetscObjectComm((PetscObject)c->dm)));
-  *fro = PetscSqrtReal(all[0]);
+  PetscCallMPI(MPI_Allreduce(&loc, fro, 1, MPIU_REAL, MPI_SUM, PetscObjectComm((PetscObject)c->dm)));
+  *fro = PetscSqrtReal(*fro);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
