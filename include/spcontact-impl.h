@@ -194,6 +194,7 @@ typedef struct {
   PetscInt      inactiveCount; /* consecutive inactive iterates (shift reset after two) */
   PetscInt      flips;         /* stick/slip changes in this step (status frozen after 3) */
   PetscInt      flipsN;        /* open/closed changes in this Newton solve (SPContactChatterHeld) */
+  PetscBool     holdOff;       /* the chatter hold let it go in this solve: held at the shift's clip (s = 0) with an open gap */
   PetscReal     dir[2];        /* slip direction at the last bookkeeping (basis T) */
   PetscBool     reversed;      /* the slip direction reversed at the last bookkeeping */
   /* friction anchor, committed at the last converged step (kept through a cut-back) */

@@ -34,7 +34,7 @@ PetscBool SPContactChatterHolds(SPContact c)
 PetscBool SPContactChatterHeld(SPContact c, PetscInt i)
 {
   const SPContactPoint *pt = &c->pt[i];
-  if (!SPContactChatterHolds(c) || pt->st.flipsN < c->chatterFlips || !pt->st.active) return PETSC_FALSE;
+  if (!SPContactChatterHolds(c) || pt->st.flipsN < c->chatterFlips || !pt->st.active || pt->st.holdOff) return PETSC_FALSE;
   return pt->eps * (pt->geo.gap + pt->st.sN) < c->chatterTension * c->peakIterate ? PETSC_TRUE : PETSC_FALSE;
 }
 
