@@ -93,7 +93,7 @@ static PetscErrorCode StopReason(SPApp app, PetscBool ok, PetscReal inc, char wh
   *stop = PETSC_TRUE;
   PetscCall(PetscTime(&t));
   PetscCallMPI(MPI_Bcast(&t, 1, MPI_DOUBLE, 0, app->comm)); /* one decision on every rank */
-  if (app->maxWallTime > 0.0 && t - app->progress.t0 > app->maxWallTime) PetscCall(PetscSNPrintf(why, len, "wall time %.1f s exceeds -max_wall_time %g", (double)(t - app->progress.t0), (double)app->maxWallTime));
+  if (app->maxWallTime > 0.0 && t - app->progress.t0 > app->maxWallTime) PetscCall(PetscSNPrintf(why, len, "wall time %.3g s exceeds -max_wall_time %g", (double)(t - app->progress.t0), (double)app->maxWallTime));
   else if (!ok && app->cutbacks >= app->maxCutbacks) PetscCall(PetscSNPrintf(why, len, "cut-back budget spent (%" PetscInt_FMT " cut-backs, -load_max_cutbacks)", app->cutbacks));
   else if (!ok && 0.5 * inc < app->minIncrement) PetscCall(PetscSNPrintf(why, len, "halving the increment %g would go below -load_min_increment %g", (double)inc, (double)app->minIncrement));
   else *stop = PETSC_FALSE;

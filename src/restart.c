@@ -316,7 +316,7 @@ static PetscErrorCode CheckIdentity(SPApp a, PetscViewer h5, PetscInt *steps, Pe
   PetscCall(GetIdentity(a, &id));
   {
     const PetscInt mine[5] = {id.dim, id.dofs, id.points, -1, id.friction};
-    const char *const what[5] = {"mesh dimension", "number of displacement dofs (mesh or -fe_degree)", "number of contact points (contact surfaces)", NULL, "friction (0 off, 1 on)"};
+    const char *const what[5] = {"mesh dimension", "number of displacement dofs (mesh or -petscspace_degree)", "number of contact points (contact surfaces)", NULL, "friction (0 off, 1 on)"};
     for (PetscInt k = 0; k < 5; ++k) {
       PetscInt theirs;
       if (!what[k]) continue; /* any rank count */
