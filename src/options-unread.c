@@ -5,16 +5,19 @@
    (a new entry is unread). */
 #include <spcontact-impl.h>
 
-/* Every option given whose name begins with key (with its dash) */
+/* Every option given whose name is key (with its dash) or, for a key ending in '_' (such as
+   "-contact_"), begins with it: "-solver_direct_switch" is not "-solver_direct_switch_3d" */
 PetscErrorCode SPOptionsUnread(const char key[])
 {
-  char *all, name[256], value[PETSC_MAX_PATH_LEN];
+  char        *all, name[256], value[PETSC_MAX_PATH_LEN];
+  const size_t kl     = strlen(key);
+  const int    prefix = kl > 0 && key[kl - 1] == '_';
 
   PetscFunctionBeginUser;
   PetscCall(PetscOptionsGetAll(NULL, &all));
   for (size_t i = 0; all[i]; ++i) {
     PetscBool set;
-    if (!SPOptionsNameAt(all, i, key)) continue;
+    if (!SPOptionsNameAt(all, i, key) || (!prefix && all[i + kl] && all[i + kl] != ' ')) continue;
     i += SPOptionsNameCopy(all, i, name, sizeof(name)) - 1;
     value[0] = 0;
     PetscCall(PetscOptionsGetString(NULL, NULL, name, value, sizeof(value), &set));

@@ -804,12 +804,17 @@ static PetscErrorCode GraphWithoutZeros(SPSolver s, PetscBool friction)
 
 /* Options read for -help that this run cannot use, reported as unused (options-unread.c): the
    Jacobian reuse without a linear material, the kept preconditioner with a factorization from the
-   start (the 2D default) */
+   start (the 2D default), the other dimension's switch to a factorization (QA helper 24) */
 static PetscErrorCode UnreadUnused(SPSolver s)
 {
+  PetscInt dim;
+
   PetscFunctionBeginUser;
+  PetscCall(DMGetDimension(s->dm, &dim));
   if (!s->reuse) PetscCall(SPOptionsUnread("-solver_jacobian_reuse"));
   if (s->directStart) PetscCall(SPOptionsUnread("-solver_pc_lag"));
+  PetscCall(SPOptionsUnread(dim == 3 ? "-solver_direct_switch" : "-solver_direct_switch_3d"));
+  PetscCall(SPOptionsUnread(dim == 3 ? "-solver_direct_dofs" : "-solver_direct_dofs_3d"));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

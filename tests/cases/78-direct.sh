@@ -101,6 +101,10 @@ test_direct_switch_scope() {
   local rc=0
   spc "$CASE_DIR/b1_3d.txt" 1 -options_file input/block3d.opts -solver_direct_switch 1 -output_dir "$CASE_DIR" -output_name b1 -output_fields false || return 1
   assert_eq from_step_3d "$(sval "$CASE_DIR/b1_3d.txt" direct_solver_from_step)" 0 || rc=1
+  # ... and the 2D option given to a 3D run is reported unused (QA helper 24), the 3D ones to a 2D run
+  assert_eq unused_2d_option_in_3d "$(grep -c '^spcontact: warning: option -solver_direct_switch was not used' "$CASE_DIR/b1_3d.txt")" 1 || rc=1
+  spc "$CASE_DIR/b1_2d.txt" 1 -options_file input/block2d.opts -solver_direct_switch_3d 300 -solver_direct_dofs_3d 10 -output_dir "$CASE_DIR" -output_name b1_2d -output_fields false || return 1
+  assert_eq unused_3d_options_in_2d "$(grep -c '^spcontact: warning: option -solver_direct_\(switch\|dofs\)_3d was not used' "$CASE_DIR/b1_2d.txt")" 2 || rc=1
   b2_iterative "$CASE_DIR/ref.txt" || return 1
   spc "$CASE_DIR/user.txt" 1 -options_file input/hertz2d.opts -solver_direct_switch 1 -pc_type gamg -output_dir "$CASE_DIR" -output_name user -output_fields false || return 1
   assert_eq from_step_user_solver "$(sval "$CASE_DIR/user.txt" direct_solver_from_step)" 0 || rc=1
