@@ -251,6 +251,8 @@ struct _n_SPContact {
   PetscReal       gapRtol, lengthScale; /* gapTol = gapRtol x lengthScale unless -contact_gap_tol is given */
   PetscBool       gapTolSet;
   PetscReal       mu, alphaT, creepRtol, slipRtol; /* friction (-contact_friction_*) */
+  PetscBool       alphaTGiven;                      /* -contact_friction_alpha given (else alpha_T = alpha) */
+  PetscReal       roundOff;                         /* SPContactGetRoundOffForce, evaluated once (< 0: not yet) */
   PetscBool       stickHold;                       /* -contact_friction_stick_hold (contact-friction.c) */
   PetscReal       obMu[SP_MAX_OBSTACLES];          /* per obstacle (default mu) */
   PetscBool       friction;                        /* some obstacle or pair has mu > 0 */

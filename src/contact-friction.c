@@ -11,19 +11,14 @@
 
 PetscErrorCode SPFrictionSetFromOptions(PetscOptionItems *PetscOptionsObject, SPContact c)
 {
-  PetscBool setAlphaT;
-
   PetscFunctionBeginUser;
   PetscCall(PetscOptionsReal("-contact_friction_mu", "Coulomb friction coefficient of every obstacle and pair (0: frictionless; per obstacle/pair: -contact_obstacle_<k>_mu, -contact_pair_<k>_mu)", "SPContactSetFromOptions", c->mu, &c->mu, NULL));
-  PetscCall(PetscOptionsReal("-contact_friction_alpha", "Tangential penalty factor: eps_T = alpha_T E / h (default: -contact_alpha)", "SPContactSetFromOptions", c->alphaT, &c->alphaT, &setAlphaT));
+  PetscCall(PetscOptionsReal("-contact_friction_alpha", "Tangential penalty factor: eps_T = alpha_T E / h (default: -contact_alpha)", "SPContactSetFromOptions", c->alphaT, &c->alphaT, &c->alphaTGiven));
   PetscCall(PetscOptionsReal("-contact_friction_creep_rtol", "Friction, methods that update the shift: converged only when no stuck point has moved more than rtol x h since it stuck (the creep committed in earlier steps counts, and the update takes it back)", "SPContactSetFromOptions", c->creepRtol, &c->creepRtol, NULL));
   PetscCall(PetscOptionsInt("-contact_friction_max_flips", "Friction: stick/slip changes of a point in a load step after which it slips for the rest of the step (a chattering point; friction.md safeguard)", "SPContactSetFromOptions", c->maxFlips, &c->maxFlips, NULL));
   PetscCall(PetscOptionsBool("-contact_friction_stick_hold", "Friction, shifted: once every stuck point has crept at most creep_rtol h and creep_rtol h_c since it stuck, stuck points keep their tangential shifts (an update would only perturb a converged state and cost a Newton iteration)", "SPContactSetFromOptions", c->stickHold, &c->stickHold, NULL));
   PetscCall(PetscOptionsReal("-contact_friction_jump_wait", "Friction, shifted: no shift update (normal or tangential) at a Newton-iteration boundary where the stick/slip set moved and the gap error grew more than this factor since the last boundary: the penetration of a step across stick/slip branches is transient, and eps times it would be locked into the shifts (0: off; else >= 1)", "SPContactSetFromOptions", c->jumpWait, &c->jumpWait, NULL));
   PetscCall(PetscOptionsReal("-contact_friction_slip_rtol", "Friction, methods that update the shift: converged only when the tangential shifts of slipping points are a fixed point of their update (one more update would move none by more than rtol x mu p / eps_T)", "SPContactSetFromOptions", c->slipRtol, &c->slipRtol, NULL));
-  PetscCheck(!setAlphaT || c->alphaT > 0.0 || PetscIsNanReal(c->alphaT), PetscObjectComm((PetscObject)c->dm), PETSC_ERR_USER_INPUT, "-contact_friction_alpha %.6g: the tangential penalty factor must be positive", (double)c->alphaT);
-  PetscCheck(c->maxFlips >= 1, PetscObjectComm((PetscObject)c->dm), PETSC_ERR_USER_INPUT, "-contact_friction_max_flips %" PetscInt_FMT ": give at least 1 (0 would freeze a point's slip direction at its first stick/slip change, before the step has found it)", c->maxFlips);
-  if (!setAlphaT) c->alphaT = -1.0; /* resolved to alpha once -contact_alpha is known (a given value is checked there) */
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

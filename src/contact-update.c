@@ -653,13 +653,17 @@ PetscErrorCode SPContactGetRoundOffForce(SPContact c, PetscReal *fro)
   PetscFunctionBeginUser;
   *fro = 0.0;
   if (!c || !c->enabled) PetscFunctionReturn(PETSC_SUCCESS);
+  if (c->roundOff >= 0.0) {
+    *fro = c->roundOff;
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
   for (PetscInt i = 0; i < c->n; ++i) {
     const SPContactPoint *pt = &c->pt[i];
     const PetscReal       f  = PETSC_MACHINE_EPSILON * (SPNorm(c->dim, pt->X) + pt->h) * PetscMax(pt->eps, pt->epsT) * pt->area;
     loc += f * f;
   }
   PetscCallMPI(MPI_Allreduce(&loc, fro, 1, MPIU_REAL, MPI_SUM, PetscObjectComm((PetscObject)c->dm)));
-  *fro = PetscSqrtReal(*fro);
+  *fro = c->roundOff = PetscSqrtReal(*fro);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

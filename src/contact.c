@@ -22,6 +22,7 @@ PetscErrorCode SPContactCreate(DM dm, SPProblem problem, PetscLogEvent search, S
   c->stickHold = PETSC_TRUE;
   c->slipRtol  = 1e-8;
   c->maxFlips  = 3;
+  c->roundOff  = -1.0;
   c->chatterFlips = 3;
   c->chatterTension = 1e-2;
   c->jumpWait  = 10.0;
@@ -230,12 +231,13 @@ PetscErrorCode SPContactSetFromOptions(SPContact c)
   PetscOptionsEnd();
   if (!setValues) c->nvalues = 0;
   c->tangent = (SPTangent)tangent;
-  if (c->alphaT < 0.0) c->alphaT = c->alpha;
+  if (!c->alphaTGiven) c->alphaT = c->alpha; /* a given value, negative or not, is checked below */
   PetscCall(SPContactCheckMu(comm, "contact_friction_", c->mu));
   PetscCheck(c->alpha > 0.0, comm, PETSC_ERR_USER_INPUT, "-contact_alpha %.6g: the penalty factor must be positive", (double)c->alpha);
   PetscCheck(c->alpha >= 1e-3 && c->alpha <= 1e8, comm, PETSC_ERR_USER_INPUT, "-contact_alpha %.6g: outside 1e-3..1e8 (eps h / E); below, the penetration is of the order of the load over E; above, the Jacobian loses all digits. 10 to 1000 are usual", (double)c->alpha);
   PetscCheck(c->alphaT > 0.0, comm, PETSC_ERR_USER_INPUT, "-contact_friction_alpha %.6g: the tangential penalty factor must be positive", (double)c->alphaT);
   PetscCheck(c->alphaT >= 1e-3 && c->alphaT <= 1e8, comm, PETSC_ERR_USER_INPUT, "-contact_friction_alpha %.6g: outside 1e-3..1e8 (eps_T h / E)", (double)c->alphaT);
+  PetscCheck(c->maxFlips >= 1, comm, PETSC_ERR_USER_INPUT, "-contact_friction_max_flips %" PetscInt_FMT ": give at least 1 (0 would freeze a point's slip direction at its first stick/slip change, before the step has found it)", c->maxFlips);
   PetscCheck(c->jumpWait == 0.0 || (c->jumpWait >= 1.0 && !PetscIsInfOrNanReal(c->jumpWait)), comm, PETSC_ERR_USER_INPUT, "-contact_friction_jump_wait %.6g: must be 0 (off) or a growth factor >= 1", (double)c->jumpWait);
   PetscCheck(c->creepRtol > 0.0 && c->slipRtol > 0.0 && !PetscIsInfOrNanReal(c->creepRtol) && !PetscIsInfOrNanReal(c->slipRtol), comm, PETSC_ERR_USER_INPUT, "-contact_friction_creep_rtol %.6g, -contact_friction_slip_rtol %.6g: must be positive finite numbers", (double)c->creepRtol, (double)c->slipRtol);
   PetscCheck(!setPenalty || (c->penalty > 0.0 && !PetscIsInfOrNanReal(c->penalty)), comm, PETSC_ERR_USER_INPUT, "-contact_penalty %.6g: the penalty must be a positive number", (double)c->penalty);

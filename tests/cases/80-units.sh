@@ -276,11 +276,11 @@ test_units_roundoff_floor_f1a_alpha1000() {
 # 1.6e-17) lies below what the coordinates' round-off leaves in the contact forces (|F| ~ 2e-15),
 # so every step stalled into the cut-back floor (QA helper 23, with every method). The round-off
 # floor now counts that residual: converged without a cut-back, T = -mu N and N to 1e-8, the same
-# figures on 2 ranks
+# figures on 2 and 3 ranks
 test_units_small_load_friction() {
   local rc=0 m np out
   for m in penalty shifted alm; do
-    for np in 1 2; do
+    for np in 1 2 3; do
       out=$CASE_DIR/${m}_np$np.txt
       spc "$out" "$np" -options_file input/friction_slide2d.opts -bc_0_value 1e-6 -bc_1_value 2e-6 -contact_method $m -output_dir "$CASE_DIR" -output_name "${m}_np$np" -output_fields false || { echo "$m np $np: run failed"; rc=1; continue; }
       assert_eq "converged_${m}_np$np" "$(sval "$out" converged)" yes || rc=1
@@ -289,6 +289,7 @@ test_units_small_load_friction() {
       assert_close "tangential_force_${m}_np$np" "$(sval "$out" contact_force_x)" -3e-7 1e-8 || rc=1
     done
     same_summary "$CASE_DIR/${m}_np1.txt" "$CASE_DIR/${m}_np2.txt" 1e-8 contact_force_x contact_force_y || rc=1
+    same_summary "$CASE_DIR/${m}_np1.txt" "$CASE_DIR/${m}_np3.txt" 1e-8 contact_force_x contact_force_y || rc=1
   done
   return $rc
 }
@@ -296,13 +297,13 @@ test_units_small_load_friction() {
 # A mesh far from the origin: a slip was the current position minus the reference one, which lost
 # machine epsilon x |X| (1e-13 at x = 1000, above the slip test's 7.5e-14): F1b moved to x = 1000
 # stopped after 9 cut-backs, at 1e6 at load 0 (QA helper 23). Slips now come from the displacements:
-# at 1000 and 1e6 the same Newton iterations and T = -mu N, N to 1e-8 as at the origin, 1 and 2 ranks
+# at 1000 and 1e6 the same Newton iterations and T = -mu N, N to 1e-8 as at the origin, 1, 2 and 3 ranks
 test_units_friction_far_from_origin() {
   local rc=0 x np out base
   base=$CASE_DIR/x0_np1.txt
   for x in 0 1000 1000000; do
-    for np in 1 2; do
-      [ $x = 0 ] && [ $np = 2 ] && continue
+    for np in 1 2 3; do
+      [ $x = 0 ] && [ $np != 1 ] && continue
       out=$CASE_DIR/x${x}_np$np.txt
       spc "$out" "$np" -options_file input/friction_slide2d.opts -dm_plex_box_lower $x,0 -dm_plex_box_upper $((x + 1)),0.5 -output_dir "$CASE_DIR" -output_name "x${x}_np$np" -output_fields false || { echo "x $x np $np: run failed"; rc=1; continue; }
       assert_eq "cutbacks_x${x}_np$np" "$(sval "$out" cutbacks)" 0 || rc=1
