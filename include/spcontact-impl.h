@@ -531,6 +531,10 @@ PETSC_EXTERN PetscErrorCode SPNaturalRead(SPNatural *, PetscViewer, const char[]
 PETSC_EXTERN PetscErrorCode SPNaturalDestroy(SPNatural *);
 PETSC_EXTERN PetscErrorCode SPRestartLoad(SPApp);
 
+/* restart-options.c: the options that set the problem, stored with the first step, compared on restart */
+PETSC_EXTERN PetscErrorCode SPRestartPhysicsOptions(SPApp, char **);
+PETSC_EXTERN PetscErrorCode SPRestartComparePhysics(MPI_Comm, const char[], const char[], const char[]);
+
 struct _n_SPApp {
   MPI_Comm  comm;
   SPLog     log;

@@ -104,12 +104,16 @@ static PetscErrorCode GetIdentity(SPApp a, Identity *id)
 
 static const char *const IdNames[] = {"dim", "dofs", "contact_points", "ranks", "friction", "load_steps"};
 
-static PetscErrorCode WriteIdentity(PetscViewer h5, const Identity *id)
+static PetscErrorCode WriteIdentity(SPApp a, PetscViewer h5, const Identity *id)
 {
   const PetscInt v[6] = {id->dim, id->dofs, id->points, id->ranks, id->friction, id->loadSteps};
   const PetscInt format = FORMAT;
+  char          *physics;
 
   PetscFunctionBeginUser;
+  PetscCall(SPRestartPhysicsOptions(a, &physics));
+  PetscCall(PetscViewerHDF5WriteAttribute(h5, "/restart", "physics_options", PETSC_STRING, physics));
+  PetscCall(PetscFree(physics));
   PetscCall(PetscViewerHDF5WriteAttribute(h5, "/restart", "format", PETSC_INT, &format));
   for (PetscInt k = 0; k < 6; ++k) PetscCall(PetscViewerHDF5WriteAttribute(h5, "/restart", IdNames[k], PETSC_INT, &v[k]));
   PetscCall(PetscViewerHDF5WriteAttribute(h5, "/restart", "method", PETSC_STRING, id->method));
@@ -232,7 +236,7 @@ static PetscErrorCode WriteStep(SPApp a, PetscReal inc)
     Identity id;
     PetscInt first = a->stepsDone;
     PetscCall(GetIdentity(a, &id));
-    PetscCall(WriteIdentity(o->h5, &id));
+    PetscCall(WriteIdentity(a, o->h5, &id));
     PetscCall(PetscViewerHDF5WriteAttribute(o->h5, "/", "first_step", PETSC_INT, &first));
     if (a->restartFile[0]) PetscCall(PetscViewerHDF5WriteAttribute(o->h5, "/", "restarted_from", PETSC_STRING, a->restartFile));
   }
@@ -327,6 +331,15 @@ static PetscErrorCode CheckIdentity(SPApp a, PetscViewer h5, PetscInt *steps, Pe
   PetscCall(PetscViewerHDF5ReadAttribute(h5, "/restart", "method", PETSC_STRING, NULL, &method));
   PetscCheck(!strcmp(method, id.method), a->comm, PETSC_ERR_USER_INPUT, "-restart %s: contact method %s there and %s here; restart with -contact_method %s", a->restartFile, method, id.method, method);
   PetscCall(PetscFree(method));
+  PetscCall(PetscViewerHDF5HasAttribute(h5, "/restart", "physics_options", &has));
+  if (has) { /* files of before 2026-12-01 have none */
+    char *there, *here;
+    PetscCall(PetscViewerHDF5ReadAttribute(h5, "/restart", "physics_options", PETSC_STRING, NULL, &there));
+    PetscCall(SPRestartPhysicsOptions(a, &here));
+    PetscCall(SPRestartComparePhysics(a->comm, a->restartFile, there, here));
+    PetscCall(PetscFree(there));
+    PetscCall(PetscFree(here));
+  }
   PetscCall(PetscViewerHDF5ReadAttribute(h5, "/restart", "load_steps", PETSC_INT, NULL, &id.loadSteps));
   if (id.loadSteps != a->loadSteps) a->loadInc = -1.0; /* new -load_steps: go on with 1/N from the restored load factor */
   PetscFunctionReturn(PETSC_SUCCESS);

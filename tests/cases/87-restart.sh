@@ -192,6 +192,8 @@ test_restart_bad_input() {
   local rc=0
   spc "$CASE_DIR/h.txt" 1 -options_file input/hertz2d.opts -load_steps 4 -debug_interrupt_after_step 1 -output_dir "$CASE_DIR" -output_name h
   spc "$CASE_DIR/c.txt" 1 -options_file input/hertz2d.opts -load_steps 1 -output_dir "$CASE_DIR" -output_name c || rc=1
+  spc "$CASE_DIR/f.txt" 1 -options_file input/friction_block2d.opts -debug_interrupt_after_step 2 -output_dir "$CASE_DIR" -output_name f
+  spc "$CASE_DIR/p.txt" 1 -options_file input/hertz2d.opts -contact_method penalty -load_steps 4 -debug_interrupt_after_step 1 -output_dir "$CASE_DIR" -output_name p
   "$PYTHON" -c "import h5py; h5py.File('$CASE_DIR/empty.h5','w')"
   echo "not hdf5" > "$CASE_DIR/text.h5"
   "$PYTHON" -c "import h5py; h5py.File('$CASE_DIR/old.h5','w').create_group('restart').attrs['steps'] = 1"
@@ -205,8 +207,18 @@ restart over its own file|input/hertz2d.opts|-load_steps 4 -output_name h -resta
 restart with another method|input/hertz2d.opts|-load_steps 4 -output_name x -contact_method alm -restart $CASE_DIR/h.h5.part
 restart with another mesh|input/hertz2d.opts|-load_steps 4 -output_name x -dm_refine 1 -restart $CASE_DIR/h.h5.part
 restart with friction added|input/hertz2d.opts|-load_steps 4 -output_name x -contact_friction_mu 0.2 -restart $CASE_DIR/h.h5.part
+restart with the obstacle moved|input/hertz2d.opts|-load_steps 4 -output_name x -contact_obstacle_0_point 0,-0.001 -restart $CASE_DIR/h.h5.part
+restart with another load|input/hertz2d.opts|-load_steps 4 -output_name x -bc_1_value 0.006 -restart $CASE_DIR/h.h5.part
+restart with another Poisson ratio (an option not given there)|input/hertz2d.opts|-load_steps 4 -output_name x -material_nu 0.25 -restart $CASE_DIR/h.h5.part
+restart with another friction coefficient|input/friction_block2d.opts|-output_name x -contact_friction_mu 0.2 -restart $CASE_DIR/f.h5.part
+restart with another obstacle friction coefficient|input/friction_block2d.opts|-output_name x -contact_obstacle_0_mu 0.2 -restart $CASE_DIR/f.h5.part
+restart of penalty with another penalty factor|input/hertz2d.opts|-load_steps 4 -output_name x -contact_method penalty -contact_alpha 100 -restart $CASE_DIR/p.h5.part
 EOF
   assert_eq "no x.* output written" "$(ls "$CASE_DIR" | grep -c '^x[._]')" 0 || rc=1
+  # what may change: the same values written otherwise, solver options, and alpha where the
+  # solution does not depend on it (shifted)
+  spc "$CASE_DIR/r.txt" 1 -options_file input/friction_block2d.opts -contact_friction_mu 3e-1 -material_nu 0.0 -contact_alpha 100 -ksp_rtol 1e-9 -output_dir "$CASE_DIR" -output_name r -restart "$CASE_DIR/f.h5.part" || rc=1
+  assert_eq "restart with mu 3e-1 for 0.3, nu 0.0 for 0, another alpha and ksp_rtol: status" "$(sval "$CASE_DIR/r.txt" status)" complete || rc=1
   return $rc
 }
 

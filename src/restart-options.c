@@ -1,0 +1,151 @@
+/* The options that set the problem a restart resumes: materials, boundary conditions and loads,
+   obstacles, pairs and friction (and, with penalty, whose solution depends on eps, the penalty
+   factors). They are stored with the first step as one string of sorted "-name value" lines
+   (attribute physics_options of /restart) and compared on restart: a changed friction coefficient,
+   obstacle point or load would otherwise continue a run whose converged steps solved another
+   problem. Solver options, output options and -load_steps may change. The values are read from
+   PetscOptionsGetAll's string, which does not mark an option used (the unused-option report). */
+#include <spcontact-impl.h>
+#include <ctype.h>
+#include <stdlib.h>
+#include <strings.h>
+
+/* Names (with their dash) that set the problem; a key ending in '_' is a prefix */
+static const char *const Physics[] = {"-material_", "-bc_", "-contact_obstacle_", "-contact_pair_", "-contact_friction_mu", "-contact_label", "-contact_values", "-contact_two_pass"};
+static const char *const Penalty[] = {"-contact_alpha", "-contact_penalty", "-contact_friction_alpha"}; /* set the penalty method's solution */
+static const char *const Solver[]  = {"-contact_pair_exchange_all"}; /* communication only */
+
+static PetscBool Matches(const char name[], const char *const keys[], size_t n)
+{
+  for (size_t k = 0; k < n; ++k) {
+    const size_t l = strlen(keys[k]);
+    if (keys[k][l - 1] == '_' ? !strncasecmp(name, keys[k], l) : !strcasecmp(name, keys[k])) return PETSC_TRUE;
+  }
+  return PETSC_FALSE;
+}
+
+static PetscBool IsName(const char *t)
+{
+  return t[0] == '-' && isalpha((unsigned char)t[1]) ? PETSC_TRUE : PETSC_FALSE;
+}
+
+static int CompareLines(const void *a, const void *b)
+{
+  return strcasecmp(*(const char *const *)a, *(const char *const *)b);
+}
+
+/* *str: the problem's options as sorted "-name value" lines (an empty string if none) */
+PetscErrorCode SPRestartPhysicsOptions(SPApp a, char **str)
+{
+  const PetscBool penalty = a->contact->enabled && a->contact->method->timing == SP_UPDATE_NONE;
+  char           *all, **tok, **line;
+  size_t          ntok = 0, nline = 0, len = 1;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsGetAll(NULL, &all));
+  PetscCall(PetscMalloc2(strlen(all) / 2 + 2, &tok, strlen(all) / 2 + 2, &line));
+  for (char *t = strtok(all, " "); t; t = strtok(NULL, " ")) tok[ntok++] = t;
+  for (size_t k = 0; k < ntok; ++k) {
+    const char *value = k + 1 < ntok && !IsName(tok[k + 1]) ? tok[k + 1] : "";
+    if (!IsName(tok[k]) || Matches(tok[k], Solver, PETSC_STATIC_ARRAY_LENGTH(Solver))) continue;
+    if (!Matches(tok[k], Physics, PETSC_STATIC_ARRAY_LENGTH(Physics)) && !(penalty && Matches(tok[k], Penalty, PETSC_STATIC_ARRAY_LENGTH(Penalty)))) continue;
+    PetscCall(PetscMalloc1(strlen(tok[k]) + strlen(value) + 2, &line[nline]));
+    PetscCall(PetscSNPrintf(line[nline], strlen(tok[k]) + strlen(value) + 2, "%s %s", tok[k], value));
+    len += strlen(line[nline++]) + 1;
+  }
+  qsort(line, nline, sizeof(char *), CompareLines);
+  PetscCall(PetscMalloc1(len, str));
+  (*str)[0] = 0;
+  for (size_t k = 0; k < nline; ++k) {
+    PetscCall(PetscStrlcat(*str, line[k], len));
+    PetscCall(PetscStrlcat(*str, "\n", len));
+    PetscCall(PetscFree(line[k]));
+  }
+  PetscCall(PetscFree2(tok, line));
+  PetscCall(PetscFree(all));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* A value as a comma-separated list of numbers (n of them, at most 16); false if it is not one */
+static PetscBool Numbers(const char v[], PetscReal x[], PetscInt *n)
+{
+  const char *p = v;
+
+  *n = 0;
+  while (*p && *n < 16) {
+    char *end;
+    x[(*n)++] = strtod(p, &end);
+    if (end == p || (*end && *end != ',')) return PETSC_FALSE;
+    p = *end ? end + 1 : end;
+  }
+  return *p || !*n ? PETSC_FALSE : PETSC_TRUE;
+}
+
+/* A flag's value: 1 true, 0 false, -1 not a flag word ("" is a flag given without a value) */
+static int Truth(const char v[])
+{
+  static const char *const yes[] = {"", "1", "true", "yes", "on"}, *const no[] = {"0", "false", "no", "off"};
+
+  for (size_t k = 0; k < 5; ++k)
+    if (!strcasecmp(v, yes[k])) return 1;
+  for (size_t k = 0; k < 4; ++k)
+    if (!strcasecmp(v, no[k])) return 0;
+  return -1;
+}
+
+/* The same value written two ways (0.3 and 3e-1, true and 1) */
+static PetscBool SameValue(const char a[], const char b[])
+{
+  PetscReal x[16], y[16];
+  PetscInt  n, m;
+
+  if (!strcasecmp(a, b)) return PETSC_TRUE;
+  if (Numbers(a, x, &n) && Numbers(b, y, &m)) {
+    if (n != m) return PETSC_FALSE;
+    for (PetscInt k = 0; k < n; ++k)
+      if (PetscAbsReal(x[k] - y[k]) > 1e-14 * PetscMax(PetscAbsReal(x[k]), PetscAbsReal(y[k]))) return PETSC_FALSE;
+    return PETSC_TRUE;
+  }
+  return Truth(a) >= 0 && Truth(a) == Truth(b) ? PETSC_TRUE : PETSC_FALSE;
+}
+
+/* The value of option name in a string of "-name value" lines; NULL if absent. Copied into v */
+static const char *Find(const char lines[], const char name[], char v[], size_t len)
+{
+  const size_t n = strlen(name);
+
+  for (const char *p = lines; p && *p; p = strchr(p, '\n') ? strchr(p, '\n') + 1 : NULL) {
+    if (strncasecmp(p, name, n) || p[n] != ' ') continue;
+    size_t k = 0;
+    for (p += n + 1; *p && *p != '\n' && k < len - 1; ++p) v[k++] = *p;
+    v[k] = 0;
+    return v;
+  }
+  return NULL;
+}
+
+/* Each option of a (there: the file's run) against b (here), the first difference in one line */
+static PetscErrorCode CompareOneWay(MPI_Comm comm, const char file[], const char a[], const char b[], PetscBool there)
+{
+  char name[256], va[PETSC_MAX_PATH_LEN], vb[PETSC_MAX_PATH_LEN];
+
+  PetscFunctionBeginUser;
+  for (const char *p = a; *p; p = strchr(p, '\n') ? strchr(p, '\n') + 1 : p + strlen(p)) {
+    const char *found;
+    (void)SPOptionsNameCopy(p, 0, name, sizeof(name));
+    (void)Find(a, name, va, sizeof(va));
+    found = Find(b, name, vb, sizeof(vb));
+    PetscCheck(found, comm, PETSC_ERR_USER_INPUT, "-restart %s: %s %s is given %s and not %s; restart with the interrupted run's options (the problem would change)", file, name, va, there ? "there" : "here", there ? "here" : "there");
+    PetscCheck(SameValue(va, vb), comm, PETSC_ERR_USER_INPUT, "-restart %s: %s is %s there and %s here; restart with the interrupted run's options (the problem would change)", file, name, there ? va : vb, there ? vb : va);
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* there: the file's attribute, here: this run's string */
+PetscErrorCode SPRestartComparePhysics(MPI_Comm comm, const char file[], const char there[], const char here[])
+{
+  PetscFunctionBeginUser;
+  PetscCall(CompareOneWay(comm, file, there, here, PETSC_TRUE));
+  PetscCall(CompareOneWay(comm, file, here, there, PETSC_FALSE));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
