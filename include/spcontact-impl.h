@@ -501,7 +501,6 @@ PETSC_EXTERN PetscErrorCode SPOutputWriteEnd(SPOutput, PetscErrorCode);
 PETSC_EXTERN PetscErrorCode SPOutputCheckStream(FILE *, const char[], PetscBool);
 PETSC_EXTERN PetscErrorCode SPOutputCheckFiles(SPOutput);
 PETSC_EXTERN PetscErrorCode SPOutputH5Reference(SPOutput, PetscBool, char[], size_t);
-PETSC_EXTERN PetscErrorCode SPOutputRemoveStale(SPOutput, const char *const[], PetscInt);
 
 /* signals.c: SIGTERM/SIGINT recorded by a handler, acted on at the load-step loop's safe point */
 typedef struct {

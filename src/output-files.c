@@ -1,7 +1,8 @@
+#define _XOPEN_SOURCE 700 /* lstat */
 /* The output files' names: -output_dir and -output_name checked before the solve (characters the
    XDMF cannot carry, the directories created and writable, no directory in the place of a file),
-   the h5 as the XDMF files name it, and the files of an earlier run with the same name that this
-   complete run did not write removed. */
+   the h5 as the XDMF files name it, and the files of an earlier run with the same name removed
+   when the run opens its own, and those a complete run did not write removed at its end. */
 #include <spcontact-impl.h>
 #include <errno.h>
 #include <string.h>
@@ -39,7 +40,15 @@ static PetscErrorCode CheckName(MPI_Comm comm, const char name[])
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Rank 0: -output_dir and the directory part of -output_name created if missing (one level each),
+/* Every missing directory of path, as mkdir -p (a failure shows up as the probe after it) */
+static void MakeDirectories(char path[])
+{
+  for (char *p = path + 1; *p; ++p)
+    if (*p == '/') *p = 0, (void)mkdir(path, 0777), *p = '/';
+  (void)mkdir(path, 0777);
+}
+
+/* Rank 0: -output_dir and the directory part of -output_name created if missing (every level),
    then probed with a file. *err: the errno if it cannot, *which: 1 -output_dir, 2 -output_name */
 static PetscErrorCode Probe(SPOutput o, int *err, PetscInt *which)
 {
@@ -48,12 +57,11 @@ static PetscErrorCode Probe(SPOutput o, int *err, PetscInt *which)
 
   PetscFunctionBeginUser;
   *err = 0, *which = 1;
-  PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
-  (void)PetscMkdir(o->dir); /* a failure shows up as the probe below */
+  PetscCall(PetscStrncpy(path, o->dir, sizeof(path)));
+  MakeDirectories(path);
   PetscCall(PetscStrncpy(path, o->prefix, sizeof(path)));
   slash = strrchr(path, '/');
-  if (slash && slash > path + strlen(o->dir)) *slash = 0, (void)PetscMkdir(path), *which = 2;
-  PetscCall(PetscPopErrorHandler());
+  if (slash && slash > path + strlen(o->dir)) *slash = 0, MakeDirectories(path), *which = 2;
   PetscCall(PetscSNPrintf(path, sizeof(path), "%s.probe", o->prefix));
   errno = 0;
   fp    = fopen(path, "w");
@@ -78,6 +86,31 @@ static PetscErrorCode FindDirectory(SPOutput o, PetscInt *k)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* path removed if it is a regular file (what a run writes; not a directory or a link) */
+static void RemoveFile(const char path[])
+{
+  struct stat st;
+
+  if (!lstat(path, &st) && S_ISREG(st.st_mode)) (void)unlink(path);
+}
+
+/* Rank 0, as the run opens its files: an earlier run's files of this name removed, final and
+   .part, so that the files beside an interrupted or failed run's .part files are its own (not a
+   complete-looking result of another run) */
+static PetscErrorCode RemoveEarlier(SPOutput o)
+{
+  char path[PETSC_MAX_PATH_LEN + 32];
+
+  PetscFunctionBeginUser;
+  for (PetscInt f = 0; f < NFILES; ++f) {
+    PetscCall(PetscSNPrintf(path, sizeof(path), "%s%s", o->prefix, Files[f]));
+    RemoveFile(path);
+    PetscCall(PetscSNPrintf(path, sizeof(path), "%s%s.part", o->prefix, Files[f]));
+    RemoveFile(path);
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* Collective, before the solve */
 PetscErrorCode SPOutputCheckFiles(SPOutput o)
 {
@@ -98,25 +131,6 @@ PetscErrorCode SPOutputCheckFiles(SPOutput o)
   PetscCheck(err != ENAMETOOLONG, comm, PETSC_ERR_USER_INPUT, "-output_name %s: %s; give a shorter name", o->name, strerror(err));
   PetscCheck(!err, comm, PETSC_ERR_USER_INPUT, "-output_name %s: cannot create or write its directory %.*s (%s); create it, or give another -output_name", o->name, (int)(strrchr(o->prefix, '/') - o->prefix), o->prefix, strerror(err));
   PetscCheck(dir < 0, comm, PETSC_ERR_USER_INPUT, "%s%s.part is a directory: the run cannot write that file; remove it or give another -output_name", o->prefix, dir < 0 ? "" : Files[dir]);
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-/* Rank 0, after a complete run's renames: the files of this name that the run did not write
-   (an earlier run's -surface.xmf, _contact.csv, fields) removed, final and .part, so the files
-   beside each other are one run's */
-PetscErrorCode SPOutputRemoveStale(SPOutput o, const char *const written[], PetscInt n)
-{
-  char path[PETSC_MAX_PATH_LEN + 32];
-
-  PetscFunctionBeginUser;
-  for (PetscInt f = 0; f < NFILES; ++f) {
-    PetscBool mine = PETSC_FALSE;
-    for (PetscInt k = 0; k < n && !mine; ++k) PetscCall(PetscStrcmp(Files[f], written[k], &mine));
-    if (mine) continue;
-    PetscCall(PetscSNPrintf(path, sizeof(path), "%s%s", o->prefix, Files[f]));
-    (void)unlink(path);
-    PetscCall(PetscSNPrintf(path, sizeof(path), "%s%s.part", o->prefix, Files[f]));
-    (void)unlink(path);
-  }
+  if (!rank) PetscCall(RemoveEarlier(o));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -331,7 +331,6 @@ PetscErrorCode SPOutputClose(SPOutput o, SPContact contact, const char status[],
   if (surface) files[n++] = "-surface.xmf";
   if (o->enabled) files[n++] = ".h5";
   if (rank == 0) PetscCall(RenameAll(o, files, n, &failed, &err));
-  if (rank == 0 && !failed) PetscCall(SPOutputRemoveStale(o, files, n));
   PetscCallMPI(MPI_Bcast(&failed, 1, MPIU_INT, 0, comm));
   PetscCallMPI(MPI_Bcast(&err, 1, MPI_INT, 0, comm));
   PetscCheck(!failed, comm, PETSC_ERR_USER_INPUT, "cannot rename %s%s.part to %s%s (%s); the complete results stay under their .part names", o->prefix, files[failed - 1], o->prefix, files[failed - 1], strerror(err));

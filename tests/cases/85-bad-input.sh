@@ -93,7 +93,7 @@ output directory under a regular file|input/hertz2d.opts|-output_dir @DIR@/afile
 output name with & (XDMF markup)|input/hertz2d.opts|-output_name a&b
 output name with a colon (the XDMF file:dataset separator)|input/hertz2d.opts|-output_name a:b
 output name ending in /|input/hertz2d.opts|-output_name sub/
-output name in a missing directory two levels deep|input/hertz2d.opts|-output_name no/such/x
+output name in directories under a regular file|input/hertz2d.opts|-output_dir @DIR@ -output_name afile/such/x
 output name too long|input/hertz2d.opts|-output_name @LONG@
 output h5.part taken by a directory|input/hertz2d.opts|-output_name busy
 output surface xmf.part taken by a directory|input/hertz2d.opts|-output_name busy2

@@ -153,9 +153,9 @@ PY
 
 # Output names: -output_name sub/x writes into <dir>/sub (created), and its XDMF files name the h5
 # as x.h5 (beside them: before, sub/x.h5, which ParaView looked for in sub/sub); check_xdmf.py
-# reads every one. A complete rerun with the same name removes what the earlier run wrote and
-# this one did not (a contact run's -surface.xmf and _contact.csv after an elastic run: the stale
-# surface XDMF pointed into an h5 without contact fields). More than 1024 load steps (B1-elastic
+# reads every one. A rerun with the same name removes what the earlier run wrote when it opens its
+# files (a contact run's -surface.xmf and _contact.csv after an elastic run: the stale surface XDMF
+# pointed into an h5 without contact fields; an interrupted run's .part beside a complete x.h5). More than 1024 load steps (B1-elastic
 # in 1030): every step in the XDMF (before: a PETSc error at step 1025).
 test_output_names() {
   local rc=0 d=$CASE_DIR/out f
@@ -168,6 +168,13 @@ test_output_names() {
   done
   spc "$CASE_DIR/again.txt" 1 -options_file input/elastic2d.opts -output_dir "$d" -output_name sub/x -quiet || return 1
   assert_eq "files after the elastic rerun" "$(cd "$d/sub" && ls | tr '\n' ' ')" "x-xdmf2.xmf x.csv x.h5 x.xmf " || rc=1
+  # missing directories at any depth, of -output_dir and of -output_name, are created
+  spc "$CASE_DIR/deep.txt" 1 -options_file input/elastic2d.opts -output_dir "$d/a/b" -output_name c/d/x -quiet || return 1
+  assert_eq "files three and five levels deep" "$(cd "$d/a/b/c/d" && ls | tr '\n' ' ')" "x-xdmf2.xmf x.csv x.h5 x.xmf " || rc=1
+  # an interrupted run leaves only its own files: the complete run's final files of that name go
+  # when it opens its .part files (before, x.h5 of the earlier run stood beside x.h5.part)
+  spc "$CASE_DIR/cut.txt" 1 -options_file input/hertz2d.opts -load_steps 3 -debug_interrupt_after_step 1 -output_dir "$d" -output_name sub/x -quiet
+  assert_eq "files after an interrupted rerun" "$(cd "$d/sub" && ls | tr '\n' ' ')" "x-surface.xmf.part x-xdmf2.xmf.part x.csv.part x.h5.part x.xmf.part x_contact.csv.part " || rc=1
   spc "$CASE_DIR/many.txt" 1 -options_file input/elastic2d.opts -load_steps 1030 -output_dir "$d" -output_name many -quiet || return 1
   assert_eq "status, 1030 steps" "$(sval "$CASE_DIR/many.txt" status) $(sval "$CASE_DIR/many.txt" load_steps)" "complete 1030" || rc=1
   assert_eq "steps in the xmf" "$(grep -c '<Grid Name="step_' "$d/many.xmf")" 1030 || rc=1
