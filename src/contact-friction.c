@@ -13,7 +13,8 @@ PetscErrorCode SPFrictionSetFromOptions(PetscOptionItems *PetscOptionsObject, SP
 {
   PetscFunctionBeginUser;
   PetscCall(PetscOptionsReal("-contact_friction_mu", "Coulomb friction coefficient of every obstacle and pair (0: frictionless; per obstacle/pair: -contact_obstacle_<k>_mu, -contact_pair_<k>_mu)", "SPContactSetFromOptions", c->mu, &c->mu, NULL));
-  PetscCall(PetscOptionsReal("-contact_friction_alpha", "Tangential penalty factor: eps_T = alpha_T E / h (default: -contact_alpha)", "SPContactSetFromOptions", c->alphaT, &c->alphaT, &c->alphaTGiven));
+  c->alphaT = c->alpha; /* the default; a given value, negative or not, is checked in contact.c */
+  PetscCall(PetscOptionsReal("-contact_friction_alpha", "Tangential penalty factor: eps_T = alpha_T E / h (default: -contact_alpha)", "SPContactSetFromOptions", c->alpha, &c->alphaT, &c->alphaTGiven));
   PetscCall(PetscOptionsReal("-contact_friction_creep_rtol", "Friction, methods that update the shift: converged only when no stuck point has moved more than rtol x h since it stuck (the creep committed in earlier steps counts, and the update takes it back)", "SPContactSetFromOptions", c->creepRtol, &c->creepRtol, NULL));
   PetscCall(PetscOptionsInt("-contact_friction_max_flips", "Friction: stick/slip changes of a point in a load step after which it slips for the rest of the step (a chattering point; friction.md safeguard)", "SPContactSetFromOptions", c->maxFlips, &c->maxFlips, NULL));
   PetscCall(PetscOptionsBool("-contact_friction_stick_hold", "Friction, shifted: once every stuck point has crept at most creep_rtol h and creep_rtol h_c since it stuck, stuck points keep their tangential shifts (an update would only perturb a converged state and cost a Newton iteration)", "SPContactSetFromOptions", c->stickHold, &c->stickHold, NULL));

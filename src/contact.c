@@ -80,7 +80,7 @@ static PetscErrorCode ObstacleSetFromOptions(MPI_Comm comm, PetscInt i, PetscInt
     PetscCall(CheckVector(comm, prefix, "normal", dim, set, n, ob->normal));
   }
   if (type != SP_OBSTACLE_PLANE || PetscOptionsObject->printhelp) /* a plane has none: reported unused */
-    PetscCall(PetscOptionsReal("-radius", "Sphere/cylinder radius > 0", "SPContactSetFromOptions", ob->radius, &ob->radius, &setR));
+    PetscCall(SPOptionsRealComputed(PetscOptionsObject, "-radius", "Sphere/cylinder radius > 0", "SPContactSetFromOptions", "none: give it", &ob->radius, &setR));
   n = 3;
   PetscCall(PetscOptionsRealArray("-motion", "Rigid displacement of the obstacle at load factor 1", "SPContactSetFromOptions", ob->motion, &n, &set));
   PetscCall(CheckVector(comm, prefix, "motion", dim, set, n, ob->motion));
@@ -211,13 +211,13 @@ PetscErrorCode SPContactSetFromOptions(SPContact c)
   /* first: the defaults of the shift acceleration and of the chatter hold depend on it */
   PetscCall(PetscOptionsBool("-contact_two_pass", "Contact pairs: each surface also acts as slave of the other (mirrored pair); each pass carries half of the areas", "SPContactSetFromOptions", c->twoPass, &c->twoPass, NULL));
   PetscCall(MethodSetFromOptions(PetscOptionsObject, c));
-  PetscCall(SPFrictionSetFromOptions(PetscOptionsObject, c));
   PetscCall(PetscOptionsString("-contact_label", "Mesh label of the slave boundary", "SPContactSetFromOptions", c->label, c->label, sizeof(c->label), NULL));
   PetscCall(PetscOptionsIntArray("-contact_values", "Label values of the slave boundary", "SPContactSetFromOptions", c->values, &c->nvalues, &setValues));
-  PetscCall(PetscOptionsReal("-contact_penalty", "Absolute penalty eps per unit area (stress/length); default: alpha E / h", "SPContactSetFromOptions", c->penalty, &c->penalty, &setPenalty));
+  PetscCall(SPOptionsRealComputed(PetscOptionsObject, "-contact_penalty", "Absolute penalty eps per unit area (stress/length); default: alpha E / h at each point", "SPContactSetFromOptions", "alpha E / h", &c->penalty, &setPenalty));
   PetscCall(PetscOptionsReal("-contact_alpha", "Penalty factor: eps = alpha E / h, h the mean slave facet size at the point", "SPContactSetFromOptions", c->alpha, &c->alpha, NULL));
+  PetscCall(SPFrictionSetFromOptions(PetscOptionsObject, c)); /* after -contact_alpha: the default of -contact_friction_alpha */
   PetscCall(PetscOptionsReal("-contact_gap_rtol", "Methods that update the shift: converged only when no point penetrates more than gap_rtol x h_c and every active point has |gap| <= gap_rtol x h_c (h_c: the smallest mean slave facet size at a contact point)", "SPContactSetFromOptions", c->gapRtol, &c->gapRtol, NULL));
-  PetscCall(PetscOptionsReal("-contact_gap_tol", "Absolute gap tolerance (a length); overrides -contact_gap_rtol", "SPContactSetFromOptions", c->gapTol, &c->gapTol, &c->gapTolSet));
+  PetscCall(SPOptionsRealComputed(PetscOptionsObject, "-contact_gap_tol", "Absolute gap tolerance (a length); overrides -contact_gap_rtol", "SPContactSetFromOptions", "gap_rtol x h_c", &c->gapTol, &c->gapTolSet));
   PetscCall(PetscOptionsReal("-contact_step_cap", "Newton step control: scale a step so no point penetrates deeper than step_cap x h in one step (0: off); a load step that stalls is solved again with a tenth of it, then a hundredth, kept until a load step converges (with friction only while the chatter hold is on, -contact_chatter_flips)", "SPContactSetFromOptions", c->stepCap, &c->stepCap, NULL));
   PetscCall(PetscOptionsBool("-contact_safeguard", "Update the shift only of points active in both the previous and the new iterate (method.md 4.1); false only to demonstrate chatter", "SPContactSetFromOptions", c->safeguard, &c->safeguard, NULL));
   PetscCall(PetscOptionsBool("-contact_shift_predict", "Friction, shifted: a load step whose increment is proportional to the last one (every condition's amplitude moves in proportion), after a step that changed no point's status, starts the stuck points from the tangential tractions extrapolated from the last two converged steps", "SPContactSetFromOptions", c->predict, &c->predict, NULL));
@@ -231,7 +231,6 @@ PetscErrorCode SPContactSetFromOptions(SPContact c)
   PetscOptionsEnd();
   if (!setValues) c->nvalues = 0;
   c->tangent = (SPTangent)tangent;
-  if (!c->alphaTGiven) c->alphaT = c->alpha; /* a given value, negative or not, is checked below */
   PetscCall(SPContactCheckMu(comm, "contact_friction_", c->mu));
   PetscCheck(c->alpha > 0.0, comm, PETSC_ERR_USER_INPUT, "-contact_alpha %.6g: the penalty factor must be positive", (double)c->alpha);
   PetscCheck(c->alpha >= 1e-3 && c->alpha <= 1e8, comm, PETSC_ERR_USER_INPUT, "-contact_alpha %.6g: outside 1e-3..1e8 (eps h / E); below, the penetration is of the order of the load over E; above, the Jacobian loses all digits. 10 to 1000 are usual", (double)c->alpha);
