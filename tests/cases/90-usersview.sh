@@ -78,7 +78,7 @@ test_progress_run_line() {
 # in the README's option reference; -help exits 0 and writes no file.
 test_help_complete() {
   local rc=0 names missing=0 o
-  names=$(grep -rhoE 'PetscOptions[A-Za-z]+\((NULL, *[A-Za-z"_]*, *|PetscOptionsObject, *)?"-[A-Za-z0-9_]+"' src/ |
+  names=$(grep -rhoE '(PetscOptions[A-Za-z]+|SPOptionsRealComputed)\((NULL, *[A-Za-z"_]*, *|PetscOptionsObject, *)?"-[A-Za-z0-9_]+"' src/ |
           grep -oE '"-[A-Za-z0-9_]+"' | tr -d '"' | sort -u)
   echo "option names read in src/: $(echo $names | wc -w)"
   mkdir -p "$CASE_DIR/run"
@@ -101,6 +101,9 @@ test_help_complete() {
     grep -qE "\"($o|_${o#-})\"" src/options-values.c || { echo "flag $o not in src/options-values.c FAILED"; missing=1; }
   done
   [ $missing -eq 0 ] && echo "every option in -help and README ok" || rc=1
+  # defaults that are not one number are named, not shown as a value the run refuses (0., -1.)
+  assert_eq "-help: penalty, gap tol, radius defaults" "$(grep -oE '^ *-contact_(penalty|gap_tol|obstacle_0_radius) <[^>]*>' "$CASE_DIR/help_opts.txt" | tr -s ' ' | tr '\n' ';')" " -contact_penalty <alpha E / h>; -contact_gap_tol <gap_rtol x h_c>; -contact_obstacle_0_radius <none: give it>;" || rc=1
+  assert_eq "-help: friction alpha's default is alpha's" "$(grep -oE '^ *-contact_friction_alpha <[^>]*>' "$CASE_DIR/help_opts.txt" | tr -s ' ')" " -contact_friction_alpha <10. : 10.>" || rc=1
   return $rc
 }
 
