@@ -48,12 +48,13 @@ PetscErrorCode SPProblemCreate(DM dm, SPProblem *problem)
 }
 
 /* Region material k from -material_<k>_* when given. The k = 0 family is always queried (when
-   not given nothing is recorded), so that -help lists it. */
-static PetscErrorCode RegionSetFromOptions(SPProblem p, PetscInt k, PetscBool given, SPMaterial *m)
+   not given nothing is recorded), so that -help lists it. own[0..2]: incremented where the region
+   gives its own law, E, nu (then -material_model/_E/_nu are not its defaults) */
+static PetscErrorCode RegionSetFromOptions(SPProblem p, PetscInt k, PetscBool given, SPMaterial *m, PetscInt own[3])
 {
   MPI_Comm  comm = PetscObjectComm((PetscObject)p->dm);
   char      prefix[32], list[256];
-  PetscBool set;
+  PetscBool set, setOwn[3];
 
   PetscFunctionBeginUser;
   if (!given && k > 0) PetscFunctionReturn(PETSC_SUCCESS);
@@ -65,11 +66,12 @@ static PetscErrorCode RegionSetFromOptions(SPProblem p, PetscInt k, PetscBool gi
   PetscCall(PetscSNPrintf(prefix, sizeof(prefix), "material_%" PetscInt_FMT "_", k));
   PetscOptionsBegin(comm, prefix, "Region materials -material_<k>_*, k = 0..7 (shown for k = 0; without any, -material_model/_E/_nu apply to every cell)", "spcontact");
   PetscCall(PetscOptionsInt("-label_value", "Region material k = 0..7: the cells of this value of -material_label (a gmsh physical surface in 2D, volume in 3D); with region materials every cell needs exactly one", "SPProblemSetFromOptions", m->value, &m->value, &set));
-  PetscCall(PetscOptionsString("-law", "Region material k: material law, linear_elastic or neo_hookean (default: -material_model)", "SPProblemSetFromOptions", m->lawName, m->lawName, sizeof(m->lawName), NULL));
-  PetscCall(PetscOptionsReal("-E", "Region material k: Young's modulus E > 0 (default: -material_E)", "SPProblemSetFromOptions", m->E, &m->E, NULL));
-  PetscCall(PetscOptionsReal("-nu", "Region material k: Poisson's ratio, -1 < nu < 0.5 (default: -material_nu)", "SPProblemSetFromOptions", m->nu, &m->nu, NULL));
+  PetscCall(PetscOptionsString("-law", "Region material k: material law, linear_elastic or neo_hookean (default: -material_model)", "SPProblemSetFromOptions", m->lawName, m->lawName, sizeof(m->lawName), &setOwn[0]));
+  PetscCall(PetscOptionsReal("-E", "Region material k: Young's modulus E > 0 (default: -material_E)", "SPProblemSetFromOptions", m->E, &m->E, &setOwn[1]));
+  PetscCall(PetscOptionsReal("-nu", "Region material k: Poisson's ratio, -1 < nu < 0.5 (default: -material_nu)", "SPProblemSetFromOptions", m->nu, &m->nu, &setOwn[2]));
   PetscOptionsEnd();
   if (!given) PetscFunctionReturn(PETSC_SUCCESS);
+  for (PetscInt j = 0; j < 3; ++j) own[j] += setOwn[j] ? 1 : 0;
   PetscCheck(set, comm, PETSC_ERR_USER_INPUT, "-material_%" PetscInt_FMT "_label_value: give the \"%s\" value of region material %" PetscInt_FMT " (other -material_%" PetscInt_FMT "_* options are set)", k, p->matLabel, k, k);
   PetscCheck(m->E > 0.0 && !PetscIsInfOrNanReal(m->E), comm, PETSC_ERR_USER_INPUT, "-material_%" PetscInt_FMT "_E %.6g: Young's modulus must be a positive finite number", k, (double)m->E);
   PetscCheck(m->nu > -1.0 && m->nu < 0.5, comm, PETSC_ERR_USER_INPUT, "-material_%" PetscInt_FMT "_nu %.6g: Poisson's ratio must satisfy -1 < nu < 0.5", k, (double)m->nu);
@@ -78,11 +80,25 @@ static PetscErrorCode RegionSetFromOptions(SPProblem p, PetscInt k, PetscBool gi
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* -material_model/_E/_nu where every region material gives its own, and -material_label without
+   region materials, are reported unused (the end-of-run report names them, as a misspelt one) */
+static PetscErrorCode ReportUnusedDefaults(SPProblem p, const PetscInt own[3])
+{
+  static const char *const defaults[3] = {"-material_model", "-material_E", "-material_nu"};
+
+  PetscFunctionBeginUser;
+  if (!p->regions) PetscCall(SPOptionsUnread("-material_label"));
+  for (PetscInt j = 0; j < 3; ++j)
+    if (p->regions && own[j] == p->nmat) PetscCall(SPOptionsUnread(defaults[j]));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode SPProblemSetFromOptions(SPProblem p)
 {
   MPI_Comm  comm = PetscObjectComm((PetscObject)p->dm);
   char      list[256];
   PetscBool given[SP_MAX_MATERIALS];
+  PetscInt  own[3] = {0, 0, 0};
 
   PetscFunctionBeginUser;
   PetscOptionsBegin(comm, NULL, "Material options", "spcontact");
@@ -99,13 +115,14 @@ PetscErrorCode SPProblemSetFromOptions(SPProblem p)
   PetscCall(SPOptionsIndexedGiven(comm, "-material_", SP_MAX_MATERIALS, "region materials", given));
   for (PetscInt k = 0; k < SP_MAX_MATERIALS; ++k) {
     SPMaterial m;
-    PetscCall(RegionSetFromOptions(p, k, given[k], &m));
+    PetscCall(RegionSetFromOptions(p, k, given[k], &m, own));
     if (!given[k]) continue;
     for (PetscInt j = 0; j < p->nmat; ++j)
       PetscCheck(p->mat[j].value != m.value, comm, PETSC_ERR_USER_INPUT, "-material_%" PetscInt_FMT "_label_value %" PetscInt_FMT ": -material_%" PetscInt_FMT "_label_value has the same value; every cell needs exactly one material", k, m.value, p->mat[j].k);
     p->mat[p->nmat++] = m;
   }
   p->regions = p->nmat > 0 ? PETSC_TRUE : PETSC_FALSE;
+  PetscCall(ReportUnusedDefaults(p, own));
   if (!p->regions) { /* the default material on every cell */
     p->nmat         = 1;
     p->mat[0].k     = 0;

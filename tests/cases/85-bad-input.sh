@@ -229,6 +229,13 @@ test_bad_input_unused_option() {
   assert_eq warnings_contact_without_contact "$(grep -c '^spcontact: warning: option -contact_\(alpha\|method\) was not used' "$CASE_DIR/nocontact.txt")" 2 || rc=1
   spc "$CASE_DIR/used.txt" 1 -options_file input/friction_block2d.opts -contact_method alm -contact_alm_max 40 -contact_friction_alpha 20 -contact_shift_accel anderson -contact_shift_accel_depth 3 -output_dir "$CASE_DIR" -output_name used -output_fields false || rc=1
   assert_eq warnings_used "$(grep -c 'warning' "$CASE_DIR/used.txt")" 0 || rc=1
+  # -material_E/_nu where every region material gives its own, and -material_label without region
+  # materials, are not the run's (QA helper 24: -material_E beside per-region E was taken silently);
+  # -material_model stays used when the regions give no -law (it is their law's default)
+  spc "$CASE_DIR/regions.txt" 1 -options_file input/hertz2d_dissimilar.opts -material_E 5 -material_nu 0.2 -material_model linear_elastic -load_steps 1 -output_dir "$CASE_DIR" -output_name regions -output_fields false || rc=1
+  assert_eq warnings_region_defaults "$(grep '^spcontact: warning:' "$CASE_DIR/regions.txt" | grep -o 'option -[a-z_E]*' | tr '\n' ' ')" "option -material_E option -material_nu " || rc=1
+  spc "$CASE_DIR/nolabel.txt" 1 -options_file input/hertz2d.opts -material_label foo -output_dir "$CASE_DIR" -output_name nolabel -output_fields false || rc=1
+  assert_eq warnings_label_without_regions "$(grep '^spcontact: warning:' "$CASE_DIR/nolabel.txt" | grep -o 'option -[a-z_E]*')" "option -material_label" || rc=1
   # options of a shift update with penalty (no update: no hold, settled set or chatter), the
   # kept preconditioner with the 2D factorization from the start, the Jacobian reuse with the
   # Neo-Hookean material (no linear stiffness to keep); used, not reported: the chatter hold's
