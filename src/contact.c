@@ -57,11 +57,25 @@ PetscErrorCode SPContactCheckMu(MPI_Comm comm, const char prefix[], PetscReal mu
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* An obstacle's place is given, never a default: a point (plane point, centre) always, and the
+   normal of a plane and the axis of a 3D cylinder (a default origin and +y/+z normal would put an
+   obstacle where the mesh may not be, and the run would report no contact or a wrong one) */
+static PetscErrorCode CheckPlaced(MPI_Comm comm, const char prefix[], PetscInt dim, SPObstacleType type, PetscBool setP, PetscBool setN)
+{
+  const char *what  = ObstacleTypes[type];
+  const char *coord = dim == 2 ? "x,y" : "x,y,z";
+
+  PetscFunctionBeginUser;
+  PetscCheck(setP, comm, PETSC_ERR_USER_INPUT, "-%spoint missing: a %s needs %s (give -%spoint %s)", prefix, what, type == SP_OBSTACLE_PLANE ? "a point on it" : (type == SP_OBSTACLE_SPHERE ? "its centre" : "a point on its axis"), prefix, coord);
+  PetscCheck(setN || !(type == SP_OBSTACLE_PLANE || (type == SP_OBSTACLE_CYLINDER && dim == 3)), comm, PETSC_ERR_USER_INPUT, "-%snormal missing: a %s needs %s (give -%snormal %s)", prefix, what, type == SP_OBSTACLE_PLANE ? "its normal, pointing towards the body" : "its axis", prefix, dim == 2 ? "nx,ny" : "nx,ny,nz");
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscErrorCode ObstacleSetFromOptions(MPI_Comm comm, PetscInt i, PetscInt dim, SPObstacle *ob, PetscReal *mu)
 {
   char      prefix[48];
   PetscInt  type = 0, n;
-  PetscBool set, setR = PETSC_FALSE;
+  PetscBool set, setR = PETSC_FALSE, setP, setN = PETSC_FALSE, help;
   PetscReal len;
 
   PetscFunctionBeginUser;
@@ -72,12 +86,12 @@ static PetscErrorCode ObstacleSetFromOptions(MPI_Comm comm, PetscInt i, PetscInt
   PetscOptionsBegin(comm, prefix, "Rigid obstacle", "spcontact");
   PetscCall(PetscOptionsEList("-type", "Obstacle: plane (point, normal), sphere (centre=point, radius; a circle in 2D), cylinder (point on axis, axis=normal, radius)", "SPContactSetFromOptions", ObstacleTypes, 3, ObstacleTypes[0], &type, NULL));
   n = 3;
-  PetscCall(PetscOptionsRealArray("-point", "Plane point, or sphere/cylinder centre", "SPContactSetFromOptions", ob->point, &n, &set));
-  PetscCall(CheckVector(comm, prefix, "point", dim, set, n, ob->point));
+  PetscCall(PetscOptionsRealArray("-point", "Plane point, or sphere/cylinder centre (required)", "SPContactSetFromOptions", ob->point, &n, &setP));
+  PetscCall(CheckVector(comm, prefix, "point", dim, setP, n, ob->point));
   n = 3;
   if (type == SP_OBSTACLE_PLANE || (type == SP_OBSTACLE_CYLINDER && dim == 3)) { /* a sphere, and a cylinder in 2D (a circle), have none: a -normal given is then reported unused */
-    PetscCall(PetscOptionsRealArray("-normal", "Plane normal (towards the body) or cylinder axis (3D; a cylinder in 2D is a circle)", "SPContactSetFromOptions", ob->normal, &n, &set));
-    PetscCall(CheckVector(comm, prefix, "normal", dim, set, n, ob->normal));
+    PetscCall(PetscOptionsRealArray("-normal", "Plane normal (towards the body) or cylinder axis (3D; a cylinder in 2D is a circle) (required)", "SPContactSetFromOptions", ob->normal, &n, &setN));
+    PetscCall(CheckVector(comm, prefix, "normal", dim, setN, n, ob->normal));
   }
   if (type != SP_OBSTACLE_PLANE || PetscOptionsObject->printhelp) /* a plane has none: reported unused */
     PetscCall(SPOptionsRealComputed(PetscOptionsObject, "-radius", "Sphere/cylinder radius > 0", "SPContactSetFromOptions", "none: give it", &ob->radius, &setR));
@@ -85,9 +99,11 @@ static PetscErrorCode ObstacleSetFromOptions(MPI_Comm comm, PetscInt i, PetscInt
   PetscCall(PetscOptionsRealArray("-motion", "Rigid displacement of the obstacle at load factor 1", "SPContactSetFromOptions", ob->motion, &n, &set));
   PetscCall(CheckVector(comm, prefix, "motion", dim, set, n, ob->motion));
   PetscCall(PetscOptionsReal("-mu", "Coulomb friction coefficient against this obstacle (default -contact_friction_mu)", "SPContactSetFromOptions", *mu, mu, NULL));
+  help = PetscOptionsObject->printhelp;
   PetscOptionsEnd();
   PetscCall(SPContactCheckMu(comm, prefix, *mu));
   ob->type = (SPObstacleType)type;
+  if (!help) PetscCall(CheckPlaced(comm, prefix, dim, ob->type, setP, setN)); /* -help alone lists an unplaced obstacle 0 */
   len      = SPNorm(dim, ob->normal);
   PetscCheck(len > 0.0, comm, PETSC_ERR_USER_INPUT, "-%snormal: the normal/axis must be a nonzero vector", prefix);
   for (PetscInt d = 0; d < dim; ++d) ob->normal[d] /= len;

@@ -45,6 +45,10 @@ zero obstacle normal|input/hertz2d.opts|-contact_obstacle_0_normal 0,0
 negative sphere radius|input/hertz2d.opts|-contact_obstacle_0_type sphere -contact_obstacle_0_radius -1
 sphere without a radius (said missing, not -1)|input/hertz2d.opts|-contact_obstacle_0_type sphere
 unknown obstacle type|input/hertz2d.opts|-contact_obstacle_0_type cone
+plane without a point (no default origin)|input/block2d.opts|-contact_obstacle_1_type plane -contact_obstacle_1_normal 0,1
+plane without a normal (no default +y)|input/block2d.opts|-contact_obstacle_1_type plane -contact_obstacle_1_point 0,0
+sphere without a centre|input/block2d.opts|-contact_obstacle_1_type sphere -contact_obstacle_1_radius 1
+3D cylinder without an axis|input/indent3d.opts|-contact_obstacle_1_type cylinder -contact_obstacle_1_point 0,0,1 -contact_obstacle_1_radius 1
 unknown method (typo)|input/hertz2d.opts|-contact_method shifty
 E negative|input/hertz2d.opts|-material_E -1
 E nan|input/hertz2d.opts|-material_E nan
