@@ -93,6 +93,7 @@ struct _n_SPProblem {
 /* bc.c */
 PETSC_EXTERN PetscErrorCode SPBCSetFromOptions(MPI_Comm, PetscInt, PetscInt *, SPBC[]);
 PETSC_EXTERN PetscErrorCode SPBCAddToDS(DM, PetscInt, SPBC[], PetscScalar[]);
+PETSC_EXTERN PetscErrorCode SPBCCheckBalance(DM, SPProblem, SPContact); /* bc-balance.c: loads the supports cannot hold, refused */
 PETSC_EXTERN void           SPBCSetLoad(PetscInt, const SPBC[], PetscReal, PetscScalar[]);
 PETSC_EXTERN PetscBool      SPBCProportional(PetscInt, const SPBC[], const PetscReal[3], PetscReal);
 

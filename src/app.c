@@ -60,6 +60,7 @@ static PetscErrorCode CheckCombination(SPApp a)
   PetscFunctionBeginUser;
   PetscCall(SPContactIsActive(a->contact, &contact));
   PetscCheck(!(contact && a->problem->mmsAmp != 0.0), a->comm, PETSC_ERR_USER_INPUT, "-material_mms: the manufactured solution is a contact-free verification (its exact solution ignores contact); drop -material_mms or the contact options");
+  PetscCall(SPBCCheckBalance(a->dm, a->problem, a->contact));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -49,6 +49,9 @@ plane without a point (no default origin)|input/block2d.opts|-contact_obstacle_1
 plane without a normal (no default +y)|input/block2d.opts|-contact_obstacle_1_type plane -contact_obstacle_1_point 0,0
 sphere without a centre|input/block2d.opts|-contact_obstacle_1_type sphere -contact_obstacle_1_radius 1
 3D cylinder without an axis|input/indent3d.opts|-contact_obstacle_1_type cylinder -contact_obstacle_1_point 0,0,1 -contact_obstacle_1_radius 1
+net shear on a frictionless plane, no support in x (F1a with mu 0; was 10 cut-backs)|input/friction_block2d.opts|-contact_friction_mu 0
+net side pressure on a frictionless plane (pressure's outward normal)|input/friction_block2d.opts|-contact_friction_mu 0 -bc_1_type pressure -bc_1_values 2 -bc_1_value 0.001
+3D net shear, Dirichlet fixing y only|input/block3d.opts|-bc_0_type traction -bc_0_value 0.001,0,0
 unknown method (typo)|input/hertz2d.opts|-contact_method shifty
 E negative|input/hertz2d.opts|-material_E -1
 E nan|input/hertz2d.opts|-material_E nan

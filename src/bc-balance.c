@@ -1,0 +1,130 @@
+/* A static problem needs its loads held: the net applied force must lie in the span of the forces
+   its supports can react. Checked before the solve where that span follows from the options
+   alone: Dirichlet conditions react along their components, frictionless rigid planes along
+   their normals, and no pair, friction, curved obstacle or follower pressure is present (those
+   react, or load, in directions that depend on the solution). A net force outside the span (a
+   shear on a block on a frictionless plane with no condition fixing that direction) has no
+   equilibrium: the solve would stall and cut back to -load_min_increment without saying why.
+   A necessary condition only: moments and where the supports sit are not checked. */
+#include <spcontact-impl.h>
+
+/* Outward unit normal, centroid and measure of a boundary facet (outward: away from its cell) */
+static PetscErrorCode FacetGeometry(DM dm, PetscInt dim, PetscInt f, PetscReal n[3], PetscReal x[3], PetscReal *area)
+{
+  const PetscInt *supp;
+  PetscReal       xc[3] = {0, 0, 0}, vol, len = 0.0, side = 0.0;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMPlexComputeCellGeometryFVM(dm, f, area, x, n));
+  PetscCall(DMPlexGetSupport(dm, f, &supp));
+  PetscCall(DMPlexComputeCellGeometryFVM(dm, supp[0], &vol, xc, NULL));
+  for (PetscInt d = 0; d < dim; ++d) len += n[d] * n[d], side += n[d] * (x[d] - xc[d]);
+  len = PetscSqrtReal(len) * (side < 0.0 ? -1.0 : 1.0);
+  for (PetscInt d = 0; d < dim; ++d) n[d] /= len;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* This rank's part of the net force of Neumann condition bc at full amplitude, and of its scale
+   (the sum of the facets' force magnitudes) */
+static PetscErrorCode AddNetForce(DM dm, PetscInt dim, const SPBC *bc, PetscReal F[3], PetscReal *scale)
+{
+  PetscInt  n, *facets;
+  PetscReal measure = 0.0;
+
+  PetscFunctionBeginUser;
+  PetscCall(SPMeshGetLabelFacets(dm, bc->label, bc->nvalues, bc->values, &n, &facets));
+  for (PetscInt k = 0; k < n; ++k) {
+    PetscReal nf[3] = {0, 0, 0}, x[3] = {0, 0, 0}, area, t[3] = {0, 0, 0};
+    PetscCall(FacetGeometry(dm, dim, facets[k], nf, x, &area));
+    measure += area;
+    if (bc->type != SP_BC_PRESSURE) continue;
+    {
+      PetscReal p = bc->value[0];
+      for (PetscInt d = 0; d < dim; ++d) p += bc->gradient[d] * x[d];
+      for (PetscInt d = 0; d < dim; ++d) t[d] = -p * nf[d] * area, F[d] += t[d];
+      *scale += PetscAbsReal(p) * area;
+    }
+  }
+  PetscCall(PetscFree(facets));
+  if (bc->type == SP_BC_TRACTION)
+    for (PetscInt d = 0; d < dim; ++d) F[d] += bc->value[d] * measure, *scale += PetscAbsReal(bc->value[d]) * measure;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* q[*nq]: orthonormal, with v's part outside their span added if it is not negligible */
+static void AddDirection(PetscInt dim, const PetscReal v[], PetscReal q[][3], PetscInt *nq)
+{
+  PetscReal w[3] = {0, 0, 0}, len = 0.0;
+
+  for (PetscInt d = 0; d < dim; ++d) w[d] = v[d];
+  for (PetscInt k = 0; k < *nq; ++k) {
+    PetscReal dot = 0.0;
+    for (PetscInt d = 0; d < dim; ++d) dot += w[d] * q[k][d];
+    for (PetscInt d = 0; d < dim; ++d) w[d] -= dot * q[k][d];
+  }
+  for (PetscInt d = 0; d < dim; ++d) len += w[d] * w[d];
+  if (len < 1e-20) return;
+  for (PetscInt d = 0; d < dim; ++d) q[*nq][d] = w[d] / PetscSqrtReal(len);
+  (*nq)++;
+}
+
+/* Whether the check applies: every support's reaction direction is known before the solve */
+static PetscBool Applies(SPProblem p, SPContact c)
+{
+  if (p->mmsAmp != 0.0) return PETSC_FALSE; /* a body force */
+  for (PetscInt i = 0; i < p->nbc; ++i)
+    if (p->bc[i].follower) return PETSC_FALSE;
+  if (!c || !c->enabled) return PETSC_TRUE;
+  if (c->npair > 0 || c->friction) return PETSC_FALSE;
+  for (PetscInt k = 0; k < c->nob; ++k)
+    if (c->ob[k].type != SP_OBSTACLE_PLANE) return PETSC_FALSE;
+  return PETSC_TRUE;
+}
+
+/* Collective, after the contact set-up: one line if the loads cannot be held */
+PetscErrorCode SPBCCheckBalance(DM dm, SPProblem p, SPContact c)
+{
+  MPI_Comm  comm = PetscObjectComm((PetscObject)dm);
+  PetscInt  dim  = p->dim, nq = 0;
+  PetscReal loc[4] = {0, 0, 0, 0}, all[4], q[6][3], perp[3] = {0, 0, 0}, len = 0.0;
+  char      fixed[64] = "", force[96];
+
+  PetscFunctionBeginUser;
+  if (!Applies(p, c)) PetscFunctionReturn(PETSC_SUCCESS);
+  for (PetscInt i = 0; i < p->nbc; ++i) {
+    const SPBC *bc = &p->bc[i];
+    if (bc->type == SP_BC_TRACTION || bc->type == SP_BC_PRESSURE) PetscCall(AddNetForce(dm, dim, bc, loc, &loc[3]));
+  }
+  PetscCallMPI(MPI_Allreduce(loc, all, 4, MPIU_REAL, MPI_SUM, comm));
+  for (PetscInt i = 0; i < p->nbc; ++i) { /* a force condition is its total, the same on every rank */
+    if (p->bc[i].type != SP_BC_FORCE) continue;
+    for (PetscInt d = 0; d < dim; ++d) all[d] += p->bc[i].value[d], all[3] += PetscAbsReal(p->bc[i].value[d]);
+  }
+  for (PetscInt i = 0; i < p->nbc; ++i) {
+    if (p->bc[i].type != SP_BC_DIRICHLET) continue;
+    for (PetscInt k = 0; k < p->bc[i].ncomps; ++k) {
+      PetscReal e[3] = {0, 0, 0};
+      e[p->bc[i].comps[k]] = 1.0;
+      AddDirection(dim, e, q, &nq);
+    }
+  }
+  for (PetscInt k = 0; c && c->enabled && k < c->nob; ++k) AddDirection(dim, c->ob[k].normal, q, &nq);
+  for (PetscInt d = 0; d < dim; ++d) perp[d] = all[d];
+  for (PetscInt k = 0; k < nq; ++k) {
+    PetscReal dot = 0.0;
+    for (PetscInt d = 0; d < dim; ++d) dot += all[d] * q[k][d];
+    for (PetscInt d = 0; d < dim; ++d) perp[d] -= dot * q[k][d];
+  }
+  for (PetscInt d = 0; d < dim; ++d) len += perp[d] * perp[d];
+  len = PetscSqrtReal(len);
+  if (!(len > 1e-8 * all[3])) PetscFunctionReturn(PETSC_SUCCESS);
+  for (PetscInt i = 0; i < p->nbc; ++i)
+    for (PetscInt k = 0; p->bc[i].type == SP_BC_DIRICHLET && k < p->bc[i].ncomps; ++k) {
+      const char name[2] = {"xyz"[p->bc[i].comps[k]], 0};
+      if (strstr(fixed, name)) continue;
+      PetscCall(PetscStrlcat(fixed, fixed[0] ? ", " : "", sizeof(fixed)));
+      PetscCall(PetscStrlcat(fixed, name, sizeof(fixed)));
+    }
+  PetscCall(PetscSNPrintf(force, sizeof(force), dim == 2 ? "(%.4g, %.4g)" : "(%.4g, %.4g, %.4g)", (double)perp[0], (double)perp[1], (double)perp[2]));
+  SETERRQ(comm, PETSC_ERR_USER_INPUT, "the loads' net force at load factor 1 has a part %s that no support can hold (Dirichlet conditions fix %s; %s): no equilibrium exists. Add friction (-contact_friction_mu), a Dirichlet condition in that direction, or loads that balance", force, fixed[0] ? fixed : "no component", c && c->enabled ? "the obstacles are frictionless planes, which push along their normals only" : "there is no contact");
+}
