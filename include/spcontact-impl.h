@@ -55,6 +55,11 @@ PETSC_EXTERN PetscErrorCode SPMaterialSetUp_NeoHookean(PetscDS, const PetscReal[
 PETSC_EXTERN void           SPMaterialStress_NeoHookean(PetscInt, const PetscReal[], const PetscScalar[], PetscScalar[]);
 PETSC_EXTERN void           SPMaterialTangent_NeoHookean(PetscInt, const PetscReal[], const PetscScalar[], PetscScalar[]);
 
+/* mesh.c: the coordinate field tabulated at a quadrature (NULL: PETSc per cell) and a cell's
+   reference Jacobians at its points (at most 8) */
+PETSC_EXTERN PetscErrorCode SPMeshCoordinateTabulation(DM, PetscQuadrature, PetscTabulation *);
+PETSC_EXTERN PetscErrorCode SPMeshCellJacobians(DM, Vec, PetscTabulation, PetscQuadrature, PetscInt, PetscReal[], PetscReal[]);
+
 /* One material: a law and its data, on the cells of one label value (region materials) or on
    every cell (the default material, value -1) */
 typedef struct {
