@@ -48,12 +48,24 @@ typedef struct {
      law is linear, or PetscFE only) */
   void (*stress)(PetscInt dim, const PetscReal param[], const PetscScalar u_x[], PetscScalar P[]);
   void (*tangent)(PetscInt dim, const PetscReal param[], const PetscScalar u_x[], PetscScalar A[]);
+  PetscBool cornerCheck; /* finite strain, W undefined for J <= 0: a converged state with det F <= 0
+                            at a cell vertex is refused and the load step cut back (SPCornerCheck) */
 } SPMaterialLaw;
 PETSC_EXTERN void           SPMaterialParameters_LinearElastic(PetscReal, PetscReal, PetscReal[]);
 PETSC_EXTERN PetscErrorCode SPMaterialSetUp_LinearElastic(PetscDS, const PetscReal[], PetscScalar[]);
 PETSC_EXTERN PetscErrorCode SPMaterialSetUp_NeoHookean(PetscDS, const PetscReal[], PetscScalar[]);
 PETSC_EXTERN void           SPMaterialStress_NeoHookean(PetscInt, const PetscReal[], const PetscScalar[], PetscScalar[]);
 PETSC_EXTERN void           SPMaterialTangent_NeoHookean(PetscInt, const PetscReal[], const PetscScalar[], PetscScalar[]);
+
+/* materials/neo_hookean-check.c: det F at every cell's vertices of a converged state */
+typedef struct _n_SPCornerCheck *SPCornerCheck;
+PETSC_EXTERN PetscErrorCode SPCornerCheckCreate(DM, PetscFE, SPCornerCheck *);
+PETSC_EXTERN PetscErrorCode SPCornerCheckEvaluate(SPCornerCheck, Vec, PetscReal *, PetscInt *);
+PETSC_EXTERN PetscErrorCode SPCornerCheckDestroy(SPCornerCheck *);
+/* mesh.c: the coordinate field tabulated at a quadrature (NULL: PETSc per cell) and a cell's
+   reference Jacobians at its points (at most 8) */
+PETSC_EXTERN PetscErrorCode SPMeshCoordinateTabulation(DM, PetscQuadrature, PetscTabulation *);
+PETSC_EXTERN PetscErrorCode SPMeshCellJacobians(DM, Vec, PetscTabulation, PetscQuadrature, PetscInt, PetscReal[], PetscReal[]);
 
 /* One material: a law and its data, on the cells of one label value (region materials) or on
    every cell (the default material, value -1) */
@@ -88,6 +100,7 @@ struct _n_SPProblem {
   PetscBool fastOperator; /* every cell's law has the fast element operator (SPMaterialLaw.fastOperator) */
   Vec       locBC;  /* local vector holding the Dirichlet values of load factor bcLoad */
   PetscReal bcLoad;
+  SPCornerCheck corner; /* the law's corner check (SPMaterialLaw.cornerCheck; NULL: none) */
 };
 
 /* bc.c */

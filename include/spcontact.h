@@ -61,6 +61,7 @@ PETSC_EXTERN PetscErrorCode SPProblemGetLocalState(SPProblem, Vec, Vec *);
 PETSC_EXTERN PetscErrorCode SPProblemRestoreLocalState(SPProblem, Vec *);
 PETSC_EXTERN PetscErrorCode SPProblemIsLinear(SPProblem, PetscBool *);
 PETSC_EXTERN PetscErrorCode SPProblemComputeError(SPProblem, Vec, PetscBool *, PetscReal *);
+PETSC_EXTERN PetscErrorCode SPProblemCheckState(SPProblem, Vec, PetscBool *, char[], size_t);
 PETSC_EXTERN PetscErrorCode SPProblemDestroy(SPProblem *);
 
 /* contact.c (points, areas), contact-search.c (obstacles), contact-enforce.c (methods),

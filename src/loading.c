@@ -1,10 +1,11 @@
 /* Load stepping: the load factor goes 1/N, 2/N, ..., 1 and scales Neumann loads, Dirichlet values
    and obstacle motion; shifts carry over. Inside a step, methods that update their shifts after a
    converged solve (augmented Lagrangian) repeat the solve until their update is done or its budget
-   is spent. A step that fails either way is halved, within a budget of cut-backs and above a floor
-   on the increment, and grows back after a few converged steps; past either, or past the
-   wall-time limit (checked before every step), the run stops with a one-line reason; converged
-   steps keep their output. After every written step the
+   is spent. A converged step whose state the material law does not admit (Neo-Hookean: det F <= 0
+   at a cell vertex, SPProblemCheckState) fails too. A step that fails is halved, within a budget
+   of cut-backs and above a floor on the increment, and grows back after a few converged steps;
+   past either, or past the wall-time limit (checked before every step), the run stops with a
+   one-line reason; converged steps keep their output. After every written step the
    restart data goes into the h5 and a pending SIGTERM/SIGINT (signals.c) stops the run there, on
    every rank. A restarted run (-restart) starts from the step, load factor and increment
    SPRestartLoad restored. */
@@ -34,6 +35,7 @@ static PetscErrorCode SolveStep(SPApp app, PetscReal load, PetscReal ratio, Pets
   SNESConvergedReason reason;
   FILE               *fp;
   PetscBool           spent;
+  char                why[128] = "";
 
   PetscFunctionBeginUser;
   PetscCall(VecCopy(app->u, ubackup));
@@ -56,9 +58,13 @@ static PetscErrorCode SolveStep(SPApp app, PetscReal load, PetscReal ratio, Pets
     PetscCall(SolveAndUpdate(app, &reason, &spent));
   }
   *ok = reason > 0 ? PETSC_TRUE : PETSC_FALSE;
+  /* a converged state the law does not admit (Neo-Hookean: a cell inside out at a vertex, which the
+     quadrature points did not see) is cut back like a failed solve; no recovery can mend it */
+  if (*ok) PetscCall(SPProblemCheckState(app->problem, app->u, ok, why, sizeof(why)));
   if (*ok) SPContactRestoreStepCap(app->contact); /* a failed step's cut-back keeps the tighter cap */
   if (!*ok) {
-    PetscCall(PetscPrintf(app->comm, "load step %" PetscInt_FMT " (load factor %g): solve did not converge (%s)\n", step, (double)load, spent ? "update budget spent" : SPSolverReasonName(app->solver, reason)));
+    if (why[0]) PetscCall(PetscPrintf(app->comm, "load step %" PetscInt_FMT " (load factor %g): %s: load step cut back\n", step, (double)load, why));
+    else PetscCall(PetscPrintf(app->comm, "load step %" PetscInt_FMT " (load factor %g): solve did not converge (%s)\n", step, (double)load, spent ? "update budget spent" : SPSolverReasonName(app->solver, reason)));
     PetscCall(VecCopy(ubackup, app->u));
     PetscCall(SPContactRestoreState(app->contact));
   }

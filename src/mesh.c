@@ -1,5 +1,6 @@
 /* Mesh: read gmsh (or build a PETSc box mesh), partition (METIS by default), distribute. */
 #include <spcontact-impl.h>
+#include <kernels/tensor.h>
 
 /* A gmsh file must exist and start with $MeshFormat; checked on rank 0 before PETSc's reader
    runs, so a bad file is a clear, collective error instead of a parse failure deep inside. */
@@ -160,9 +161,7 @@ static void JacobianShape(PetscInt dim, const PetscReal J[], PetscReal *detJ, Pe
     for (PetscInt i = 0; i < dim; ++i) n2 += PetscSqr(J[i * dim + k]);
     cols *= PetscSqrtReal(n2);
   }
-  if (dim == 1) *detJ = J[0];
-  else if (dim == 2) *detJ = J[0] * J[3] - J[1] * J[2];
-  else *detJ = J[0] * (J[4] * J[8] - J[5] * J[7]) - J[1] * (J[3] * J[8] - J[5] * J[6]) + J[2] * (J[3] * J[7] - J[4] * J[6]);
+  *detJ  = SPDeterminant(dim, J);
   *shape = cols > 0.0 ? *detJ / cols : 0.0;
 }
 
@@ -219,51 +218,70 @@ static PetscErrorCode CoordinateTabulation(DM dm, PetscQuadrature q, PetscTabula
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* detJ and shape at the check points of cell c: from the tabulation (J_ik = sum_b x_b dphi_b,i/dxi_k
-   over the cell's closure coordinates) or from PETSc */
-static PetscErrorCode CellJacobians(DM dm, Vec coords, PetscTabulation T, PetscQuadrature q, PetscInt c, PetscReal detJ[], PetscReal shape[])
+/* The reference-to-cell Jacobians J[p dim^2 + i dim + k] = dX_i/dxi_k and their determinants at the
+   points of q (at most 8) of cell c: from the coordinate tabulation T (J_ik = sum_b x_b dphi_b,i/dxi_k
+   over the cell's closure coordinates) or, T NULL, from PETSc */
+PetscErrorCode SPMeshCellJacobians(DM dm, Vec coords, PetscTabulation T, PetscQuadrature q, PetscInt c, PetscReal J[], PetscReal detJ[])
 {
-  PetscInt     dim, np;
-  PetscReal    J[9 * 8], v0[3 * 8], invJ[9 * 8];
+  DM           cdm;
+  PetscInt     dim, np, n;
+  PetscReal    v0[3 * 8], invJ[9 * 8];
   PetscScalar *x = NULL;
 
   PetscFunctionBeginUser;
   PetscCall(DMGetDimension(dm, &dim));
   PetscCall(PetscQuadratureGetData(q, NULL, NULL, &np, NULL, NULL));
-  if (!T) PetscCall(DMPlexComputeCellGeometryFEM(dm, c, q, v0, J, invJ, detJ));
-  else {
-    DM       cdm;
-    PetscInt n;
-    PetscCall(DMGetCoordinateDM(dm, &cdm));
-    PetscCall(DMPlexVecGetClosure(cdm, NULL, coords, c, &n, &x));
-    PetscCheck(n == T->Nb, PETSC_COMM_SELF, PETSC_ERR_PLIB, "cell %" PetscInt_FMT ": %" PetscInt_FMT " closure coordinates for %" PetscInt_FMT " basis functions", c, n, T->Nb);
-    for (PetscInt p = 0; p < np; ++p)
-      for (PetscInt i = 0; i < dim; ++i)
-        for (PetscInt k = 0; k < dim; ++k) {
-          PetscReal v = 0.0;
-          for (PetscInt b = 0; b < n; ++b) v += PetscRealPart(x[b]) * T->T[1][((p * n + b) * dim + i) * dim + k]; /* Nc = cdim = dim */
-          J[p * dim * dim + i * dim + k] = v;
-        }
-    PetscCall(DMPlexVecRestoreClosure(cdm, NULL, coords, c, &n, &x));
+  PetscCheck(np <= 8, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "%" PetscInt_FMT " points: at most 8", np);
+  if (!T) {
+    PetscCall(DMPlexComputeCellGeometryFEM(dm, c, q, v0, J, invJ, detJ));
+    PetscFunctionReturn(PETSC_SUCCESS);
   }
+  PetscCall(DMGetCoordinateDM(dm, &cdm));
+  PetscCall(DMPlexVecGetClosure(cdm, NULL, coords, c, &n, &x));
+  PetscCheck(n == T->Nb, PETSC_COMM_SELF, PETSC_ERR_PLIB, "cell %" PetscInt_FMT ": %" PetscInt_FMT " closure coordinates for %" PetscInt_FMT " basis functions", c, n, T->Nb);
   for (PetscInt p = 0; p < np; ++p) {
-    PetscReal d;
-    JacobianShape(dim, &J[p * dim * dim], &d, &shape[p]);
-    if (T) detJ[p] = d;
+    for (PetscInt i = 0; i < dim; ++i)
+      for (PetscInt k = 0; k < dim; ++k) {
+        PetscReal v = 0.0;
+        for (PetscInt b = 0; b < n; ++b) v += PetscRealPart(x[b]) * T->T[1][((p * n + b) * dim + i) * dim + k]; /* Nc = cdim = dim */
+        J[p * dim * dim + i * dim + k] = v;
+      }
+    detJ[p] = SPDeterminant(dim, &J[p * dim * dim]);
   }
+  PetscCall(DMPlexVecRestoreClosure(cdm, NULL, coords, c, &n, &x));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* The tabulated Jacobians agree with PETSc's on cells [c0, c1), or the tabulation is dropped */
-static PetscErrorCode CheckTabulation(DM dm, Vec coords, PetscQuadrature q, PetscInt c0, PetscInt c1, PetscTabulation *T)
+/* detJ and shape (JacobianShape) at the check points of cell c */
+static PetscErrorCode CellJacobians(DM dm, Vec coords, PetscTabulation T, PetscQuadrature q, PetscInt c, PetscReal detJ[], PetscReal shape[])
 {
-  PetscReal d0[8], d1[8], s[8];
-  PetscInt  np;
+  PetscInt  dim, np;
+  PetscReal J[9 * 8], d;
 
   PetscFunctionBeginUser;
-  if (!*T) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(DMGetDimension(dm, &dim));
   PetscCall(PetscQuadratureGetData(q, NULL, NULL, &np, NULL, NULL));
-  for (PetscInt c = c0; c < c1 && *T; ++c) {
+  PetscCall(SPMeshCellJacobians(dm, coords, T, q, c, J, detJ));
+  for (PetscInt p = 0; p < np; ++p) JacobianShape(dim, &J[p * dim * dim], &d, &shape[p]); /* detJ: PETSc's own without T */
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The coordinate field's tabulation at q (CoordinateTabulation), kept only if its Jacobians agree
+   with PETSc's on the first 8 cells (closure permutations, layouts); NULL: ask PETSc per cell
+   (SPMeshCellJacobians). Not collective: coordinates set up (DMGetCoordinatesLocalSetUp). */
+PetscErrorCode SPMeshCoordinateTabulation(DM dm, PetscQuadrature q, PetscTabulation *T)
+{
+  Vec       coords;
+  PetscReal d0[8], d1[8], s[8];
+  PetscInt  np, cStart, cEnd;
+
+  PetscFunctionBeginUser;
+  PetscCall(CoordinateTabulation(dm, q, T));
+  if (!*T) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(DMGetCoordinatesLocal(dm, &coords));
+  PetscCall(DMPlexGetHeightStratum(dm, 0, &cStart, &cEnd));
+  PetscCall(PetscQuadratureGetData(q, NULL, NULL, &np, NULL, NULL));
+  for (PetscInt c = cStart; c < PetscMin(cEnd, cStart + 8) && *T; ++c) {
     PetscCall(CellJacobians(dm, coords, *T, q, c, d0, s));
     PetscCall(CellJacobians(dm, coords, NULL, q, c, d1, s));
     for (PetscInt k = 0; k < np && *T; ++k)
@@ -291,8 +309,7 @@ static PetscErrorCode CheckCells(DM dm)
   PetscCall(DMPlexGetHeightStratum(dm, 0, &cStart, &cEnd));
   if (cEnd > cStart) PetscCall(DMPlexGetCellType(dm, cStart, &ct));
   PetscCall(CheckPoints(dim, ct, &q));
-  PetscCall(CoordinateTabulation(dm, q, &T));
-  PetscCall(CheckTabulation(dm, coords, q, cStart, PetscMin(cEnd, cStart + 8), &T));
+  PetscCall(SPMeshCoordinateTabulation(dm, q, &T));
   PetscCall(PetscQuadratureGetData(q, NULL, NULL, &np, NULL, NULL));
   for (PetscInt c = cStart; c < cEnd && bad < 0; ++c) {
     PetscCall(CellJacobians(dm, coords, T, q, c, detJ, shape));

@@ -6,11 +6,12 @@
 
 /* The material laws. A law declares what the solver may assume: `linear` (stiffness reuse is
    exact) and `fastOperator` (the fast element operator implements it; fast-elastic.c: in closed
-   form for linear isotropic elasticity, through the law's pointwise stress/tangent otherwise). */
+   form for linear isotropic elasticity, through the law's pointwise stress/tangent otherwise), and
+   whether a converged state needs det F > 0 at the cells' vertices (`cornerCheck`). */
 static const SPMaterialLaw SPMaterialLaws[] = {
-  /* name            parameters                          setup                          linear       fastOperator manufactured body force  fast stress, tangent */
-  {"linear_elastic", SPMaterialParameters_LinearElastic, SPMaterialSetUp_LinearElastic, PETSC_TRUE,  PETSC_TRUE, SPElasticF0MMS,    NULL,                        NULL                        },
-  {"neo_hookean",    SPMaterialParameters_LinearElastic, SPMaterialSetUp_NeoHookean,    PETSC_FALSE, PETSC_TRUE, SPNeoHookeanF0MMS, SPMaterialStress_NeoHookean, SPMaterialTangent_NeoHookean},
+  /* name            parameters                          setup                          linear       fastOperator manufactured body force  fast stress, tangent                                      corner check */
+  {"linear_elastic", SPMaterialParameters_LinearElastic, SPMaterialSetUp_LinearElastic, PETSC_TRUE,  PETSC_TRUE, SPElasticF0MMS,    NULL,                        NULL,                        PETSC_FALSE},
+  {"neo_hookean",    SPMaterialParameters_LinearElastic, SPMaterialSetUp_NeoHookean,    PETSC_FALSE, PETSC_TRUE, SPNeoHookeanF0MMS, SPMaterialStress_NeoHookean, SPMaterialTangent_NeoHookean, PETSC_TRUE },
 };
 #define SP_NLAWS ((PetscInt)(sizeof(SPMaterialLaws) / sizeof(SPMaterialLaws[0])))
 
@@ -369,6 +370,7 @@ PetscErrorCode SPProblemSetUp(SPProblem p)
      materials: per cell, from the auxiliary field */
   PetscCall(law->setup(ds, p->regions ? NULL : p->mat[0].param, constants));
   if (p->regions) PetscCall(SetUpAuxiliary(p, fe, simplex));
+  if (law->cornerCheck) PetscCall(SPCornerCheckCreate(p->dm, fe, &p->corner));
   PetscCall(PetscFEDestroy(&fe));
   p->linear       = law->linear;
   for (PetscInt i = 0; i < p->nbc; ++i)
@@ -500,9 +502,32 @@ PetscErrorCode SPProblemComputeError(SPProblem p, Vec u, PetscBool *has, PetscRe
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Whether the converged state u is one the law admits (the corner check, SPMaterialLaw.cornerCheck;
+   always with the other laws); if not, why[] says why. Collective, once per converged load step. */
+PetscErrorCode SPProblemCheckState(SPProblem p, Vec u, PetscBool *ok, char why[], size_t len)
+{
+  Vec       locX;
+  PetscReal minJ;
+  PetscInt  inverted;
+
+  PetscFunctionBeginUser;
+  *ok    = PETSC_TRUE;
+  why[0] = 0;
+  if (!p->corner) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(SPProblemGetLocalState(p, u, &locX));
+  PetscCall(SPCornerCheckEvaluate(p->corner, locX, &minJ, &inverted));
+  PetscCall(SPProblemRestoreLocalState(p, &locX));
+  PetscCall(PetscInfo(p->dm, "corner check: smallest det F at a cell vertex %.10g, %" PetscInt_FMT " cells with one <= 0\n", (double)minJ, inverted));
+  if (!inverted) PetscFunctionReturn(PETSC_SUCCESS);
+  *ok = PETSC_FALSE;
+  PetscCall(PetscSNPrintf(why, len, "inverted cell corner (J = %.3g at a vertex; cells with J <= 0 at a corner: %" PetscInt_FMT ")", (double)minJ, inverted));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode SPProblemDestroy(SPProblem *p)
 {
   PetscFunctionBeginUser;
+  PetscCall(SPCornerCheckDestroy(&(*p)->corner));
   PetscCall(VecDestroy(&(*p)->locBC));
   PetscCall(PetscFree2((*p)->cellMat, (*p)->cellParam));
   PetscCall(PetscFree((*p)->vertexE));

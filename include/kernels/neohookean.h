@@ -13,7 +13,9 @@
    Tangent A_iJkL = dP_iJ / dF_kL:
      A = mu d_ik d_JL + (mu - lambda ln J) Fi_Li Fi_Jk + lambda Fi_Ji Fi_Lk,  Fi = F^-1
    A cell turned inside out (J <= 0) has no energy: the stress is NaN, so SNES stops with
-   DIVERGED_FNORM_NAN and the load step is cut back; no NaN reaches a written step. */
+   DIVERGED_FNORM_NAN and the load step is cut back; no NaN reaches a written step. The quadrature
+   points miss a Q1 cell inverted at a corner only, so a converged state is also checked at the
+   cells' vertices (materials/neo_hookean-check.c) and cut back if J <= 0 there. */
 #ifndef SP_KERNELS_NEOHOOKEAN_H
 #define SP_KERNELS_NEOHOOKEAN_H
 #include <kernels/elastic.h>

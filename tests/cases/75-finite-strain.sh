@@ -1,7 +1,8 @@
 # Finite strain (issue 15, first part): the compressible Neo-Hookean law (kernels/neohookean.h)
 # against the closed-form homogeneous uniaxial state (scripts/neohookean_uniaxial.py solves the
 # stress-stretch equations independently of the code), in two unit systems and on 1, 2, 3 ranks;
-# a Newton iterate that turns cells inside out is cut back; the small-load limit is linear
+# a Newton iterate that turns cells inside out is cut back, and so is a converged state with a cell
+# inverted at a vertex (the corner check); the small-load limit is linear
 # elasticity to first order in the load; the assembled Jacobian (bulk + contact) at deformed,
 # penetrated states against finite differences.
 
@@ -68,6 +69,73 @@ test_finite_strain_inversion() {
   grep -q "DIVERGED_FNORM_NAN" "$out" || { echo "no inverted iterate was caught"; rc=1; }
   assert_ge cutbacks "$(sval "$out" cutbacks)" 1 || rc=1
   grep -qi "nan" <(sval "$out" displacement_max) && { echo "NaN in the result"; rc=1; }
+  return $rc
+}
+
+# nh_corner NAME NP OPTS... : a Neo-Hookean run whose equilibrium turns a Q1 cell inside out at a
+# corner. Asserted: the corner check caught it (an "inverted cell corner" line), no written step
+# has a corner J <= 0 (scripts/corner_jacobian.py on the h5, independent of the code), and the run
+# either converged or stopped with one 'stopping:' line and no final-named output file
+nh_corner() {
+  local name=$1 np=$2 rc=0 h5; shift 2
+  local out=$CASE_DIR/$name.txt
+  mkdir -p "$CASE_DIR/$name"
+  spc "$out" "$np" -material_model neo_hookean -output_dir "$CASE_DIR/$name" "$@"
+  h5=$(ls "$CASE_DIR/$name"/*.h5 "$CASE_DIR/$name"/*.h5.part 2>/dev/null | head -n 1)
+  [ -n "$h5" ] || { echo "$name: no h5 written"; return 1; }
+  $PYTHON scripts/corner_jacobian.py "$h5" > "$CASE_DIR/$name.cj" || return 1
+  echo "$name: $(tail -n 1 "$CASE_DIR/$name.cj"); caught $(grep -c 'inverted cell corner' "$out"); converged $(sval "$out" converged) load_factor $(sval "$out" load_factor) cutbacks $(sval "$out" cutbacks) newton $(sval "$out" newton_iterations)"
+  grep -m 1 'inverted cell corner' "$out"
+  assert_ge "caught_$name" "$(grep -c 'inverted cell corner' "$out")" 1 || rc=1
+  assert_eq "written_steps_inverted_$name" "$(awk '$1 == "all" {print $5}' "$CASE_DIR/$name.cj")" 0 || rc=1
+  if [ "$(sval "$out" converged)" != yes ]; then
+    assert_eq "stop_lines_$name" "$(grep -c '^stopping: ' "$out")" 1 || rc=1
+    assert_eq "final_files_$name" "$(find "$CASE_DIR/$name" \( -name '*.h5' -o -name '*.xmf' -o -name '*.csv' \) | wc -l)" 0 || rc=1
+  fi
+  return $rc
+}
+
+# A Q1 cell inside out at a corner only (J <= 0 at a vertex, J > 0 at every Gauss point) gives a
+# finite stress, so its solve converges. Before the corner check the QA case (block3d 4^3, q = 1.2,
+# friction 0.3) wrote steps 4 and 5 with corner J -0.0263 and -0.0120 (2 cells), and its 2D variant
+# (block2d 4x4 in 16 steps) 12 steps with inverted corners, J down to -0.110 (4 cells), up to load
+# factor 0.872. Now those states are cut back and both runs stop at the cut-back floor (the
+# equilibrium just beyond inverts a corner) with every written step's corner J > 0: 2D at load
+# factor 0.578003 (J >= 4.59e-4, 464 Newton iterations on 1 and 2 ranks), 3D at 0.434814 (J >=
+# 0.0564). 2D: the same figures on 1 and 2 ranks (in one step, its 0.375 -> 0.5 increment
+# converges or not by MUMPS's round-off on 2 ranks); 3D: the same load factor and displacement,
+# GMRES/GAMG's Newton iterations within 2 (675, 674).
+test_finite_strain_corner_inversion() {
+  local rc=0 np
+  for np in 1 2; do
+    nh_corner q2d_np$np $np -options_file input/block2d.opts -bc_1_value 1.2 -contact_friction_mu 0.3 -dm_plex_box_faces 4,4 -load_steps 16 || rc=1
+    nh_corner qa3d_np$np $np -options_file input/block3d.opts -bc_2_value 1.2 -contact_friction_mu 0.3 -dm_plex_box_faces 4,4,4 || rc=1
+  done
+  same_summary "$CASE_DIR/q2d_np1.txt" "$CASE_DIR/q2d_np2.txt" 1e-8 load_factor load_steps cutbacks newton_iterations displacement_max || rc=1
+  same_summary "$CASE_DIR/qa3d_np1.txt" "$CASE_DIR/qa3d_np2.txt" 1e-8 load_factor load_steps cutbacks displacement_max || rc=1
+  assert_close newton_3d "$(sval "$CASE_DIR/qa3d_np2.txt" newton_iterations)" "$(sval "$CASE_DIR/qa3d_np1.txt" newton_iterations)" 0 2 || rc=1
+  return $rc
+}
+
+# The corner check's J (its -info line, the last converged step's smallest det F at a vertex)
+# against scripts/corner_jacobian.py on the h5 (1e-8): Q1 and Q2 in the homogeneous biaxial state
+# of elastic2d (E = 20: J = 0.9746; Q2 through the displacement FE tabulated at the vertices, the
+# script from the vertex values, exact for a linear field), the Hertz disc's triangles (PETSc's
+# geometry per cell: the gmsh coordinates are no PetscFE) and the 3D block's hexes, on 2 ranks
+test_finite_strain_corner_j() {
+  local rc=0 name out j ref
+  cj_case() { # NAME OPTS...
+    name=$1; shift
+    out=$CASE_DIR/$name.txt
+    spc "$out" 2 "$@" -material_model neo_hookean -output_dir "$CASE_DIR" -output_name "$name" -info :dm || return 1
+    j=$(grep 'corner check:' "$out" | tail -n 1 | sed 's/.*at a cell vertex \([^,]*\),.*/\1/')
+    ref=$($PYTHON scripts/corner_jacobian.py "$CASE_DIR/$name.h5" | awk '$1 == "all" {print $3}')
+    assert_close "corner_J_$name" "$j" "$ref" 1e-8
+  }
+  cj_case el2d_q1 -options_file input/elastic2d.opts -material_E 20 || rc=1
+  cj_case el2d_q2 -options_file input/elastic2d.opts -material_E 20 -petscspace_degree 2 || rc=1
+  cj_case hertz2d_p1 -options_file input/hertz2d.opts -bc_1_value 0.05 -load_steps 1 || rc=1
+  cj_case block3d_q1 -options_file input/block3d.opts -bc_2_value 0.3 || rc=1
   return $rc
 }
 
