@@ -107,6 +107,7 @@ struct _n_SPProblem {
 PETSC_EXTERN PetscErrorCode SPBCSetFromOptions(MPI_Comm, PetscInt, PetscInt *, SPBC[]);
 PETSC_EXTERN PetscErrorCode SPBCAddToDS(DM, PetscInt, SPBC[], PetscScalar[]);
 PETSC_EXTERN PetscErrorCode SPBCCheckBalance(DM, SPProblem, SPContact); /* bc-balance.c: loads the supports cannot hold, refused */
+PETSC_EXTERN PetscReal      SPBCAmplitude(const SPBC *, PetscReal); /* a condition's load curve at a load factor */
 PETSC_EXTERN void           SPBCSetLoad(PetscInt, const SPBC[], PetscReal, PetscScalar[]);
 PETSC_EXTERN PetscBool      SPBCProportional(PetscInt, const SPBC[], const PetscReal[3], PetscReal);
 
@@ -502,6 +503,7 @@ struct _n_SPOutput {
   PetscBool   contactFields;
   PetscBool   frictionFields; /* tangential_traction, slip, status (runs with friction) */
   PetscBool   pointsFile;     /* the contact-points CSV was written (renamed with the others) */
+  PetscBool   earlierRemoved; /* an earlier run's final files of this name removed (first converged step) */
   struct {                    /* output-guard.c: the write in progress */
     char      file[PETSC_MAX_PATH_LEN + 32];
     PetscBool open, collective; /* collective: HDF5 writes (SPOutputWriteBegin) */
@@ -514,6 +516,7 @@ PETSC_EXTERN PetscErrorCode SPOutputWriteBegin(SPOutput, const char[], PetscBool
 PETSC_EXTERN PetscErrorCode SPOutputWriteEnd(SPOutput, PetscErrorCode);
 PETSC_EXTERN PetscErrorCode SPOutputCheckStream(FILE *, const char[], PetscBool);
 PETSC_EXTERN PetscErrorCode SPOutputCheckFiles(SPOutput);
+PETSC_EXTERN PetscErrorCode SPOutputRemoveEarlierResults(SPOutput);
 PETSC_EXTERN PetscErrorCode SPOutputH5Reference(SPOutput, PetscBool, char[], size_t);
 
 /* signals.c: SIGTERM/SIGINT recorded by a handler, acted on at the load-step loop's safe point */
@@ -544,9 +547,11 @@ PETSC_EXTERN PetscErrorCode SPNaturalRead(SPNatural *, PetscViewer, const char[]
 PETSC_EXTERN PetscErrorCode SPNaturalDestroy(SPNatural *);
 PETSC_EXTERN PetscErrorCode SPRestartLoad(SPApp);
 
-/* restart-options.c: the options that set the problem, stored with the first step, compared on restart */
+/* restart-options.c: the options that set the problem and the mesh's place and size, stored with the first step, compared on restart */
 PETSC_EXTERN PetscErrorCode SPRestartPhysicsOptions(SPApp, char **);
 PETSC_EXTERN PetscErrorCode SPRestartComparePhysics(MPI_Comm, const char[], const char[], const char[]);
+PETSC_EXTERN PetscErrorCode SPRestartMeshGeometry(DM, char[], size_t);
+PETSC_EXTERN PetscErrorCode SPRestartCompareGeometry(MPI_Comm, const char[], const char[], const char[]);
 
 struct _n_SPApp {
   MPI_Comm  comm;

@@ -81,43 +81,73 @@ static PetscBool Applies(SPProblem p, SPContact c)
   return PETSC_TRUE;
 }
 
-/* Collective, after the contact set-up: one line if the loads cannot be held */
+/* The Dirichlet components and the planes' normals: an orthonormal basis q[*nq] of the reactions */
+static void Reactions(SPProblem p, SPContact c, PetscReal q[][3], PetscInt *nq)
+{
+  *nq = 0;
+  for (PetscInt i = 0; i < p->nbc; ++i)
+    for (PetscInt k = 0; p->bc[i].type == SP_BC_DIRICHLET && k < p->bc[i].ncomps; ++k) {
+      PetscReal e[3] = {0, 0, 0};
+      e[p->bc[i].comps[k]] = 1.0;
+      AddDirection(p->dim, e, q, nq);
+    }
+  for (PetscInt k = 0; c && c->enabled && k < c->nob; ++k) AddDirection(p->dim, c->ob[k].normal, q, nq);
+}
+
+/* Net force of every Neumann condition at full amplitude (F[4 i + 0..2]) and its scale (F[4 i + 3]),
+   summed over the ranks */
+static PetscErrorCode ConditionForces(DM dm, SPProblem p, PetscReal F[])
+{
+  PetscReal loc[4 * SP_MAX_BC];
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscArrayzero(loc, 4 * SP_MAX_BC));
+  for (PetscInt i = 0; i < p->nbc; ++i)
+    if (p->bc[i].type == SP_BC_TRACTION || p->bc[i].type == SP_BC_PRESSURE) PetscCall(AddNetForce(dm, p->dim, &p->bc[i], &loc[4 * i], &loc[4 * i + 3]));
+  PetscCallMPI(MPI_Allreduce(loc, F, 4 * SP_MAX_BC, MPIU_REAL, MPI_SUM, PetscObjectComm((PetscObject)dm)));
+  for (PetscInt i = 0; i < p->nbc; ++i) /* a force condition is its total, the same on every rank */
+    for (PetscInt d = 0; p->bc[i].type == SP_BC_FORCE && d < p->dim; ++d) F[4 * i + d] = p->bc[i].value[d], F[4 * i + 3] += PetscAbsReal(p->bc[i].value[d]);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The part of the net force at load factor `load` outside the reactions' span; false if negligible */
+static PetscBool Unheld(SPProblem p, const PetscReal F[], PetscReal load, PetscReal q[][3], PetscInt nq, PetscReal perp[3])
+{
+  PetscReal scale = 0.0, len = 0.0;
+
+  perp[0] = perp[1] = perp[2] = 0.0;
+  for (PetscInt i = 0; i < p->nbc; ++i) {
+    const PetscReal a = SPBCAmplitude(&p->bc[i], load);
+    for (PetscInt d = 0; d < p->dim; ++d) perp[d] += a * F[4 * i + d];
+    scale += a * F[4 * i + 3];
+  }
+  for (PetscInt k = 0; k < nq; ++k) {
+    PetscReal dot = 0.0;
+    for (PetscInt d = 0; d < p->dim; ++d) dot += perp[d] * q[k][d];
+    for (PetscInt d = 0; d < p->dim; ++d) perp[d] -= dot * q[k][d];
+  }
+  for (PetscInt d = 0; d < p->dim; ++d) len += perp[d] * perp[d];
+  return PetscSqrtReal(len) > 1e-8 * scale ? PETSC_TRUE : PETSC_FALSE;
+}
+
+/* Collective, after the contact set-up: one line if the loads cannot be held. The net force is
+   linear in the load factor between the ends of the load curves, so those and 1 are checked. */
 PetscErrorCode SPBCCheckBalance(DM dm, SPProblem p, SPContact c)
 {
   MPI_Comm  comm = PetscObjectComm((PetscObject)dm);
-  PetscInt  dim  = p->dim, nq = 0;
-  PetscReal loc[4] = {0, 0, 0, 0}, all[4], q[6][3], perp[3] = {0, 0, 0}, len = 0.0;
+  PetscInt  dim  = p->dim, nq;
+  PetscReal F[4 * SP_MAX_BC], q[6][3], perp[3], load = 1.0;
+  PetscBool unheld;
   char      fixed[64] = "", force[96];
 
   PetscFunctionBeginUser;
   if (!Applies(p, c)) PetscFunctionReturn(PETSC_SUCCESS);
-  for (PetscInt i = 0; i < p->nbc; ++i) {
-    const SPBC *bc = &p->bc[i];
-    if (bc->type == SP_BC_TRACTION || bc->type == SP_BC_PRESSURE) PetscCall(AddNetForce(dm, dim, bc, loc, &loc[3]));
-  }
-  PetscCallMPI(MPI_Allreduce(loc, all, 4, MPIU_REAL, MPI_SUM, comm));
-  for (PetscInt i = 0; i < p->nbc; ++i) { /* a force condition is its total, the same on every rank */
-    if (p->bc[i].type != SP_BC_FORCE) continue;
-    for (PetscInt d = 0; d < dim; ++d) all[d] += p->bc[i].value[d], all[3] += PetscAbsReal(p->bc[i].value[d]);
-  }
-  for (PetscInt i = 0; i < p->nbc; ++i) {
-    if (p->bc[i].type != SP_BC_DIRICHLET) continue;
-    for (PetscInt k = 0; k < p->bc[i].ncomps; ++k) {
-      PetscReal e[3] = {0, 0, 0};
-      e[p->bc[i].comps[k]] = 1.0;
-      AddDirection(dim, e, q, &nq);
-    }
-  }
-  for (PetscInt k = 0; c && c->enabled && k < c->nob; ++k) AddDirection(dim, c->ob[k].normal, q, &nq);
-  for (PetscInt d = 0; d < dim; ++d) perp[d] = all[d];
-  for (PetscInt k = 0; k < nq; ++k) {
-    PetscReal dot = 0.0;
-    for (PetscInt d = 0; d < dim; ++d) dot += all[d] * q[k][d];
-    for (PetscInt d = 0; d < dim; ++d) perp[d] -= dot * q[k][d];
-  }
-  for (PetscInt d = 0; d < dim; ++d) len += perp[d] * perp[d];
-  len = PetscSqrtReal(len);
-  if (!(len > 1e-8 * all[3])) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(ConditionForces(dm, p, F));
+  Reactions(p, c, q, &nq);
+  unheld = Unheld(p, F, load, q, nq, perp);
+  for (PetscInt i = 0; i < p->nbc && !unheld; ++i)
+    for (PetscInt e = 0; e < 2 && !unheld; ++e) load = p->bc[i].ramp[e], unheld = load > 0.0 && Unheld(p, F, load, q, nq, perp);
+  if (!unheld) PetscFunctionReturn(PETSC_SUCCESS);
   for (PetscInt i = 0; i < p->nbc; ++i)
     for (PetscInt k = 0; p->bc[i].type == SP_BC_DIRICHLET && k < p->bc[i].ncomps; ++k) {
       const char name[2] = {"xyz"[p->bc[i].comps[k]], 0};
@@ -126,5 +156,5 @@ PetscErrorCode SPBCCheckBalance(DM dm, SPProblem p, SPContact c)
       PetscCall(PetscStrlcat(fixed, name, sizeof(fixed)));
     }
   PetscCall(PetscSNPrintf(force, sizeof(force), dim == 2 ? "(%.4g, %.4g)" : "(%.4g, %.4g, %.4g)", (double)perp[0], (double)perp[1], (double)perp[2]));
-  SETERRQ(comm, PETSC_ERR_USER_INPUT, "the loads' net force at load factor 1 has a part %s that no support can hold (Dirichlet conditions fix %s; %s): no equilibrium exists. Add friction (-contact_friction_mu), a Dirichlet condition in that direction, or loads that balance", force, fixed[0] ? fixed : "no component", c && c->enabled ? "the obstacles are frictionless planes, which push along their normals only" : "there is no contact");
+  SETERRQ(comm, PETSC_ERR_USER_INPUT, "the loads' net force at load factor %.6g has a part %s that no support can hold (Dirichlet conditions fix %s; %s): no equilibrium exists. %s", (double)load, force, fixed[0] ? fixed : "no component", c && c->enabled ? "the obstacles are frictionless planes, which push along their normals only" : "there is no contact", c && c->enabled ? "Add friction (-contact_friction_mu), a Dirichlet condition in that direction, or loads that balance" : "Add a Dirichlet condition in that direction, or loads that balance");
 }

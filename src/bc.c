@@ -94,7 +94,7 @@ static PetscErrorCode LabelMeasure(DM dm, const SPBC *bc, PetscReal *measure)
 }
 
 /* Amplitude of a condition at load factor `load`: its load curve (proportional by default) */
-static PetscReal Amplitude(const SPBC *bc, PetscReal load)
+PetscReal SPBCAmplitude(const SPBC *bc, PetscReal load)
 {
   if (bc->ramp[0] == 0.0 && bc->ramp[1] == 1.0) return load;
   return PetscMin(1.0, PetscMax(0.0, (load - bc->ramp[0]) / (bc->ramp[1] - bc->ramp[0])));
@@ -104,7 +104,7 @@ static PetscReal Amplitude(const SPBC *bc, PetscReal load)
 static PetscErrorCode DirichletValue(PetscInt dim, PetscReal load, const PetscReal x[], PetscInt Nc, PetscScalar *u, void *ctx)
 {
   const SPBC     *bc = (const SPBC *)ctx;
-  const PetscReal a  = Amplitude(bc, load);
+  const PetscReal a  = SPBCAmplitude(bc, load);
   for (PetscInt c = 0; c < Nc; ++c) u[c] = 0.0;
   for (PetscInt k = 0; k < bc->ncomps; ++k) u[bc->comps[k]] = a * bc->value[k];
   return PETSC_SUCCESS;
@@ -114,7 +114,7 @@ static PetscErrorCode DirichletValue(PetscInt dim, PetscReal load, const PetscRe
 PetscBool SPBCProportional(PetscInt nbc, const SPBC bc[], const PetscReal l[3], PetscReal r)
 {
   for (PetscInt i = 0; i < nbc; ++i) {
-    const PetscReal a0 = Amplitude(&bc[i], l[0]), a1 = Amplitude(&bc[i], l[1]), a2 = Amplitude(&bc[i], l[2]);
+    const PetscReal a0 = SPBCAmplitude(&bc[i], l[0]), a1 = SPBCAmplitude(&bc[i], l[1]), a2 = SPBCAmplitude(&bc[i], l[2]);
     if (PetscAbsReal((a2 - a1) - r * (a1 - a0)) > 1e-10 * (PetscAbsReal(a2 - a1) + PetscAbsReal(a1 - a0) + 1e-300)) return PETSC_FALSE;
   }
   return PETSC_TRUE;
@@ -124,7 +124,7 @@ PetscBool SPBCProportional(PetscInt nbc, const SPBC bc[], const PetscReal l[3], 
 void SPBCSetLoad(PetscInt nbc, const SPBC bc[], PetscReal load, PetscScalar constants[])
 {
   for (PetscInt i = 0; i < nbc; ++i) {
-    const PetscReal a = Amplitude(&bc[i], load);
+    const PetscReal a = SPBCAmplitude(&bc[i], load);
     if (bc[i].slot < 0) continue;
     for (PetscInt k = 0; k < SP_C_BCW; ++k) constants[SP_C_BC0 + SP_C_BCW * bc[i].slot + k] = a * bc[i].base[k];
   }

@@ -2,7 +2,7 @@
 /* The output files' names: -output_dir and -output_name checked before the solve (characters the
    XDMF cannot carry, the directories created and writable, no directory in the place of a file),
    the h5 as the XDMF files name it, and the files of an earlier run with the same name removed
-   when the run opens its own, and those a complete run did not write removed at its end. */
+   (its .part files when the run opens its own, its final files at the run's first converged step). */
 #include <spcontact-impl.h>
 #include <errno.h>
 #include <string.h>
@@ -36,6 +36,7 @@ static PetscErrorCode CheckName(MPI_Comm comm, const char name[])
 
   PetscFunctionBeginUser;
   PetscCheck(Base(name)[0], comm, PETSC_ERR_USER_INPUT, "-output_name %s: the name ends with '/'; give a file name (e.g. -output_name run or sub/run)", name);
+  PetscCheck(name[0] != '/', comm, PETSC_ERR_USER_INPUT, "-output_name %s: an absolute name; the name is relative to -output_dir: give the directory as -output_dir and the file name as -output_name", name);
   PetscCheck(!bad, comm, PETSC_ERR_USER_INPUT, "-output_name %s: the XDMF file cannot name an HDF5 file with '%c' in it; use letters, digits and - _ . in the name", name, *bad);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -94,20 +95,32 @@ static void RemoveFile(const char path[])
   if (!lstat(path, &st) && S_ISREG(st.st_mode)) (void)unlink(path);
 }
 
-/* Rank 0, as the run opens its files: an earlier run's files of this name removed, final and
-   .part, so that the files beside an interrupted or failed run's .part files are its own (not a
-   complete-looking result of another run) */
-static PetscErrorCode RemoveEarlier(SPOutput o)
+/* Rank 0: an earlier run's files of this name removed (tail "" the final names, ".part" the
+   others), so that the files beside a run's .part files are its own, not a complete-looking result
+   of another run: the .part files as the run opens its own, the final ones when it writes its first
+   converged step (a run refused at its first solve keeps an earlier complete result) */
+static PetscErrorCode RemoveEarlier(SPOutput o, const char tail[])
 {
   char path[PETSC_MAX_PATH_LEN + 32];
 
   PetscFunctionBeginUser;
   for (PetscInt f = 0; f < NFILES; ++f) {
-    PetscCall(PetscSNPrintf(path, sizeof(path), "%s%s", o->prefix, Files[f]));
-    RemoveFile(path);
-    PetscCall(PetscSNPrintf(path, sizeof(path), "%s%s.part", o->prefix, Files[f]));
+    PetscCall(PetscSNPrintf(path, sizeof(path), "%s%s%s", o->prefix, Files[f], tail));
     RemoveFile(path);
   }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Collective: at the run's first converged step, an earlier run's final files of this name go */
+PetscErrorCode SPOutputRemoveEarlierResults(SPOutput o)
+{
+  PetscMPIInt rank;
+
+  PetscFunctionBeginUser;
+  if (o->earlierRemoved) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCallMPI(MPI_Comm_rank(PetscObjectComm((PetscObject)o->dm), &rank));
+  if (!rank) PetscCall(RemoveEarlier(o, ""));
+  o->earlierRemoved = PETSC_TRUE;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -131,6 +144,6 @@ PetscErrorCode SPOutputCheckFiles(SPOutput o)
   PetscCheck(err != ENAMETOOLONG, comm, PETSC_ERR_USER_INPUT, "-output_name %s: %s; give a shorter name", o->name, strerror(err));
   PetscCheck(!err, comm, PETSC_ERR_USER_INPUT, "-output_name %s: cannot create or write its directory %.*s (%s); create it, or give another -output_name", o->name, (int)(strrchr(o->prefix, '/') - o->prefix), o->prefix, strerror(err));
   PetscCheck(dir < 0, comm, PETSC_ERR_USER_INPUT, "%s%s.part is a directory: the run cannot write that file; remove it or give another -output_name", o->prefix, dir < 0 ? "" : Files[dir]);
-  if (!rank) PetscCall(RemoveEarlier(o));
+  if (!rank) PetscCall(RemoveEarlier(o, ".part"));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -209,6 +209,7 @@ PetscErrorCode SPOutputWriteStep(SPOutput o, SPProblem problem, Vec u, SPContact
   char file[PETSC_MAX_PATH_LEN + 16];
 
   PetscFunctionBeginUser;
+  PetscCall(SPOutputRemoveEarlierResults(o));
   PetscCall(PetscSNPrintf(file, sizeof(file), "%s.csv.part", o->prefix));
   PetscCall(SPOutputWriteBegin(o, file, PETSC_FALSE));
   PetscCall(SPOutputWriteEnd(o, FlushHistory(o, PETSC_FALSE)));
@@ -325,6 +326,7 @@ PetscErrorCode SPOutputClose(SPOutput o, SPContact contact, const char status[],
     PetscCall(SPOutputWriteEnd(o, SPOutputWriteSurfaceXdmf(o, contact, complete, &surface)));
   }
   if (!complete) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(SPOutputRemoveEarlierResults(o)); /* done at the first step; a run always has one */
   files[n++] = ".csv";
   if (o->pointsFile) files[n++] = "_contact.csv";
   if (o->enabled) files[n++] = ".xmf", files[n++] = "-xdmf2.xmf";

@@ -46,11 +46,17 @@ PetscErrorCode SPRestartPhysicsOptions(SPApp a, char **str)
   PetscCall(PetscMalloc2(strlen(all) / 2 + 2, &tok, strlen(all) / 2 + 2, &line));
   for (char *t = strtok(all, " "); t; t = strtok(NULL, " ")) tok[ntok++] = t;
   for (size_t k = 0; k < ntok; ++k) {
-    const char *value = k + 1 < ntok && !IsName(tok[k + 1]) ? tok[k + 1] : "";
+    size_t n = strlen(tok[k]) + 2, j;
     if (!IsName(tok[k]) || Matches(tok[k], Solver, PETSC_STATIC_ARRAY_LENGTH(Solver))) continue;
     if (!Matches(tok[k], Physics, PETSC_STATIC_ARRAY_LENGTH(Physics)) && !(penalty && Matches(tok[k], Penalty, PETSC_STATIC_ARRAY_LENGTH(Penalty)))) continue;
-    PetscCall(PetscMalloc1(strlen(tok[k]) + strlen(value) + 2, &line[nline]));
-    PetscCall(PetscSNPrintf(line[nline], strlen(tok[k]) + strlen(value) + 2, "%s %s", tok[k], value));
+    for (j = k + 1; j < ntok && !IsName(tok[j]); ++j) n += strlen(tok[j]) + 1; /* a value with spaces ("0.1, 0") is several tokens */
+    PetscCall(PetscMalloc1(n, &line[nline]));
+    PetscCall(PetscStrncpy(line[nline], tok[k], n));
+    PetscCall(PetscStrlcat(line[nline], " ", n));
+    for (size_t m = k + 1; m < j; ++m) {
+      if (m > k + 1) PetscCall(PetscStrlcat(line[nline], " ", n));
+      PetscCall(PetscStrlcat(line[nline], tok[m], n));
+    }
     len += strlen(line[nline++]) + 1;
   }
   qsort(line, nline, sizeof(char *), CompareLines);
@@ -147,5 +153,49 @@ PetscErrorCode SPRestartComparePhysics(MPI_Comm comm, const char file[], const c
   PetscFunctionBeginUser;
   PetscCall(CompareOneWay(comm, file, there, here, PETSC_TRUE));
   PetscCall(CompareOneWay(comm, file, here, there, PETSC_FALSE));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The mesh's place and size, independent of the partition: per coordinate the smallest and largest
+   value and the 2-norm over the vertices ("lo,hi,norm" per coordinate). The counts (dofs, contact
+   points) are checked with the run's identity; a box of other extent or a scaled mesh has the same
+   counts (-dm_plex_box_upper, -dm_plex_scale, another mesh file) */
+PetscErrorCode SPRestartMeshGeometry(DM dm, char str[], size_t len)
+{
+  Vec      X;
+  PetscInt dim;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMGetCoordinateDim(dm, &dim));
+  PetscCall(DMGetCoordinates(dm, &X));
+  str[0] = 0;
+  for (PetscInt d = 0; d < dim; ++d) {
+    PetscReal lo, hi, nrm;
+    char      part[96];
+    PetscCall(VecStrideMin(X, d, NULL, &lo));
+    PetscCall(VecStrideMax(X, d, NULL, &hi));
+    PetscCall(VecStrideNorm(X, d, NORM_2, &nrm));
+    PetscCall(PetscSNPrintf(part, sizeof(part), "%s%.17g,%.17g,%.17g", d ? "," : "", (double)lo, (double)hi, (double)nrm));
+    PetscCall(PetscStrlcat(str, part, len));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The extents to 1e-12 of the largest one, the norms to 1e-10 (their sums' order follows the
+   partition) */
+PetscErrorCode SPRestartCompareGeometry(MPI_Comm comm, const char file[], const char there[], const char here[])
+{
+  PetscReal a[16], b[16], ext = 0.0;
+  PetscInt  n, m;
+  PetscBool same;
+
+  PetscFunctionBeginUser;
+  same = Numbers(there, a, &n) && Numbers(here, b, &m) && n == m ? PETSC_TRUE : PETSC_FALSE;
+  for (PetscInt k = 0; same && k < n; k += 3) ext = PetscMax(ext, PetscMax(PetscAbsReal(b[k + 1] - b[k]), PetscMax(PetscAbsReal(b[k]), PetscAbsReal(b[k + 1]))));
+  for (PetscInt k = 0; same && k < n; ++k) {
+    const PetscReal tol = k % 3 == 2 ? 1e-10 * PetscMax(PetscAbsReal(a[k]), PetscAbsReal(b[k])) : 1e-12 * ext;
+    if (PetscAbsReal(a[k] - b[k]) > tol) same = PETSC_FALSE;
+  }
+  PetscCheck(same, comm, PETSC_ERR_USER_INPUT, "-restart %s: the mesh lies elsewhere or has another size there (per coordinate: smallest, largest, 2-norm over the vertices: %s there, %s here); restart with the interrupted run's mesh", file, there, here);
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -108,12 +108,14 @@ static PetscErrorCode WriteIdentity(SPApp a, PetscViewer h5, const Identity *id)
 {
   const PetscInt v[6] = {id->dim, id->dofs, id->points, id->ranks, id->friction, id->loadSteps};
   const PetscInt format = FORMAT;
-  char          *physics;
+  char          *physics, geometry[512];
 
   PetscFunctionBeginUser;
   PetscCall(SPRestartPhysicsOptions(a, &physics));
   PetscCall(PetscViewerHDF5WriteAttribute(h5, "/restart", "physics_options", PETSC_STRING, physics));
   PetscCall(PetscFree(physics));
+  PetscCall(SPRestartMeshGeometry(a->dm, geometry, sizeof(geometry)));
+  PetscCall(PetscViewerHDF5WriteAttribute(h5, "/restart", "mesh_geometry", PETSC_STRING, geometry));
   PetscCall(PetscViewerHDF5WriteAttribute(h5, "/restart", "format", PETSC_INT, &format));
   for (PetscInt k = 0; k < 6; ++k) PetscCall(PetscViewerHDF5WriteAttribute(h5, "/restart", IdNames[k], PETSC_INT, &v[k]));
   PetscCall(PetscViewerHDF5WriteAttribute(h5, "/restart", "method", PETSC_STRING, id->method));
@@ -339,6 +341,14 @@ static PetscErrorCode CheckIdentity(SPApp a, PetscViewer h5, PetscInt *steps, Pe
     PetscCall(SPRestartComparePhysics(a->comm, a->restartFile, there, here));
     PetscCall(PetscFree(there));
     PetscCall(PetscFree(here));
+  }
+  PetscCall(PetscViewerHDF5HasAttribute(h5, "/restart", "mesh_geometry", &has));
+  if (has) { /* files of before 2026-12-01 have none */
+    char *there, here[512];
+    PetscCall(PetscViewerHDF5ReadAttribute(h5, "/restart", "mesh_geometry", PETSC_STRING, NULL, &there));
+    PetscCall(SPRestartMeshGeometry(a->dm, here, sizeof(here)));
+    PetscCall(SPRestartCompareGeometry(a->comm, a->restartFile, there, here));
+    PetscCall(PetscFree(there));
   }
   PetscCall(PetscViewerHDF5ReadAttribute(h5, "/restart", "load_steps", PETSC_INT, NULL, &id.loadSteps));
   if (id.loadSteps != a->loadSteps) a->loadInc = -1.0; /* new -load_steps: go on with 1/N from the restored load factor */

@@ -213,12 +213,17 @@ restart with another Poisson ratio (an option not given there)|input/hertz2d.opt
 restart with another friction coefficient|input/friction_block2d.opts|-output_name x -contact_friction_mu 0.2 -restart $CASE_DIR/f.h5.part
 restart with another obstacle friction coefficient|input/friction_block2d.opts|-output_name x -contact_obstacle_0_mu 0.2 -restart $CASE_DIR/f.h5.part
 restart of penalty with another penalty factor|input/hertz2d.opts|-load_steps 4 -output_name x -contact_method penalty -contact_alpha 100 -restart $CASE_DIR/p.h5.part
+restart with the box taller (the same counts; QA helper 25)|input/friction_block2d.opts|-output_name x -dm_plex_box_upper 1,0.6 -restart $CASE_DIR/f.h5.part
+restart with the mesh scaled|input/friction_block2d.opts|-output_name x -dm_plex_scale 3 -restart $CASE_DIR/f.h5.part
 EOF
   assert_eq "no x.* output written" "$(ls "$CASE_DIR" | grep -c '^x[._]')" 0 || rc=1
   # what may change: the same values written otherwise, solver options, and alpha where the
   # solution does not depend on it (shifted)
-  spc "$CASE_DIR/r.txt" 1 -options_file input/friction_block2d.opts -contact_friction_mu 3e-1 -material_nu 0.0 -contact_alpha 100 -ksp_rtol 1e-9 -output_dir "$CASE_DIR" -output_name r -restart "$CASE_DIR/f.h5.part" || rc=1
-  assert_eq "restart with mu 3e-1 for 0.3, nu 0.0 for 0, another alpha and ksp_rtol: status" "$(sval "$CASE_DIR/r.txt" status)" complete || rc=1
+  spc "$CASE_DIR/r.txt" 1 -options_file input/friction_block2d.opts -contact_friction_mu 3e-1 -material_nu 0.0 -bc_1_value "0.0015, 0" -contact_alpha 100 -ksp_rtol 1e-9 -output_dir "$CASE_DIR" -output_name r -restart "$CASE_DIR/f.h5.part" || rc=1
+  assert_eq "restart with mu 3e-1 for 0.3, nu 0.0 for 0, a value with a space, another alpha and ksp_rtol: status" "$(sval "$CASE_DIR/r.txt" status)" complete || rc=1
+  # a value with a space is compared whole (QA helper 25: only its first word was)
+  spc "$CASE_DIR/r2.txt" 1 -options_file input/friction_block2d.opts -bc_1_value "0.0015, 0.001" -output_dir "$CASE_DIR" -output_name r2 -restart "$CASE_DIR/f.h5.part"
+  assert_eq "restart with a changed second word of a value: refused" "$(grep -c '^spcontact: error: -restart .*-bc_1_value is 0.0015,0 there and 0.0015, 0.001 here' "$CASE_DIR/r2.txt")" 1 || rc=1
   return $rc
 }
 

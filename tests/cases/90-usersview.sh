@@ -174,8 +174,12 @@ test_output_names() {
   # missing directories at any depth, of -output_dir and of -output_name, are created
   spc "$CASE_DIR/deep.txt" 1 -options_file input/elastic2d.opts -output_dir "$d/a/b" -output_name c/d/x -quiet || return 1
   assert_eq "files three and five levels deep" "$(cd "$d/a/b/c/d" && ls | tr '\n' ' ')" "x-xdmf2.xmf x.csv x.h5 x.xmf " || rc=1
+  # a run refused at its first solve (an unknown factorization package) keeps the earlier
+  # complete run's final files (QA helper 25: they were removed as the run opened its files)
+  spc "$CASE_DIR/refused.txt" 1 -options_file input/elastic2d.opts -pc_type lu -pc_factor_mat_solver_type superlu_dist2 -output_dir "$d" -output_name sub/x -quiet
+  assert_eq "refused at the first solve: exit, earlier final files kept" "$? $(cd "$d/sub" && ls | grep -v part | tr '\n' ' ')" "1 x-xdmf2.xmf x.csv x.h5 x.xmf " || rc=1
   # an interrupted run leaves only its own files: the complete run's final files of that name go
-  # when it opens its .part files (before, x.h5 of the earlier run stood beside x.h5.part)
+  # at its first converged step (before, x.h5 of the earlier run stood beside x.h5.part)
   spc "$CASE_DIR/cut.txt" 1 -options_file input/hertz2d.opts -load_steps 3 -debug_interrupt_after_step 1 -output_dir "$d" -output_name sub/x -quiet
   assert_eq "files after an interrupted rerun" "$(cd "$d/sub" && ls | tr '\n' ' ')" "x-surface.xmf.part x-xdmf2.xmf.part x.csv.part x.h5.part x.xmf.part x_contact.csv.part " || rc=1
   spc "$CASE_DIR/many.txt" 1 -options_file input/elastic2d.opts -load_steps 1030 -output_dir "$d" -output_name many -quiet || return 1
