@@ -108,7 +108,7 @@ static PetscErrorCode ObstacleSetFromOptions(MPI_Comm comm, PetscInt i, PetscInt
   PetscCheck(len > 0.0, comm, PETSC_ERR_USER_INPUT, "-%snormal: the normal/axis must be a nonzero vector", prefix);
   for (PetscInt d = 0; d < dim; ++d) ob->normal[d] /= len;
   if (ob->type != SP_OBSTACLE_PLANE) PetscCheck(setR, comm, PETSC_ERR_USER_INPUT, "-%sradius missing: a %s needs one (give -%sradius R, R > 0)", prefix, ObstacleTypes[type], prefix);
-  if (ob->type != SP_OBSTACLE_PLANE) PetscCheck(ob->radius > 0.0, comm, PETSC_ERR_USER_INPUT, "-%sradius %.6g: a %s needs a radius > 0", prefix, (double)ob->radius, ObstacleTypes[type]);
+  if (ob->type != SP_OBSTACLE_PLANE) PetscCheck(ob->radius > 0.0 && !PetscIsInfOrNanReal(ob->radius), comm, PETSC_ERR_USER_INPUT, "-%sradius %.6g: a %s needs a finite radius > 0", prefix, (double)ob->radius, ObstacleTypes[type]);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

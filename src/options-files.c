@@ -2,12 +2,15 @@
    wall): every -options_file (or -options_file_yaml) on the command line, in PETSC_OPTIONS and,
    recursively, inside options files names a readable file. An options file is read as PETSc reads
    it: '#', '!' and '%' start a comment, the rest is a stream of whitespace-separated tokens.
-   Nesting deeper than MAX_DEPTH (a file that names itself, directly or not) is an error too. A
-   YAML file must be one PETSc can read (options-yaml.c). */
+   Nesting deeper than MAX_DEPTH (a file that names itself, directly or not) is an error too, and so
+   is a line PETSc's reader refuses (two values, two options). A YAML file must be one PETSc can
+   read (options-yaml.c). */
+#include <ctype.h>
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 #include <spcontact.h>
 
 #define MAX_DEPTH 16 /* options files inside options files */
@@ -59,14 +62,70 @@ static char *NextToken(char **s)
   return tok;
 }
 
+/* PETSc's option name test (PetscOptionsValidKey): a dash, a letter, and not a number (-inf) */
+static int ValidKey(const char *key)
+{
+  char *end;
+
+  if (!key || key[0] != '-') return 0;
+  if (key[1] == '-') key++;
+  if (!isalpha((unsigned char)key[1])) return 0;
+  (void)strtod(key, &end);
+  return end == key || *end == '_' || isalnum((unsigned char)*end);
+}
+
+/* Up to max tokens of a line as PETSc splits it (PetscTokenFind with ' '): a token that starts
+   with '"' runs to the next '"'; *n the count (max + 1: more) */
+static void LineTokens(char *s, char *tok[], int max, int *n)
+{
+  *n = 0;
+  while (*s == ' ') s++;
+  while (*s && *n <= max) {
+    const char end = *s == '"' ? '"' : ' ';
+    if (end == '"') s++;
+    if (*n < max) tok[*n] = s;
+    (*n)++;
+    while (*s && *s != end) s++;
+    if (*s) *s++ = 0;
+    while (*s == ' ') s++;
+  }
+}
+
+/* One line as PETSc's options-file reader takes it (PetscOptionsInsertFilePetsc: '#' comments,
+   tabs and CRs as spaces; an option and at most one value, or "alias -a -b"); what it refuses with
+   an error wall is said here in one line */
+static int CheckLine(const char *text, int number, const Where *w)
+{
+  char  line[MAX_LINE], *tok[4], why[MAX_LINE + 64] = "";
+  int   n, alias;
+
+  snprintf(line, sizeof(line), "%s", text);
+  line[strcspn(line, "#")] = 0;
+  for (char *c = line; *c; ++c)
+    if (*c == '\t' || *c == '\r' || *c == '\n') *c = ' ';
+  LineTokens(line, tok, 4, &n);
+  if (!n) return 0;
+  alias = !strcasecmp(tok[0], "alias");
+  if (tok[0][0] == '-' && !ValidKey(tok[0])) snprintf(why, sizeof(why), "%s is not an option name (a dash and a letter)", tok[0]);
+  else if (tok[0][0] != '-' && !alias) snprintf(why, sizeof(why), "the line starts with %s, not an option name", tok[0]);
+  else if (!alias && n > 1 && ValidKey(tok[1])) snprintf(why, sizeof(why), "two options on one line (%s %s)", tok[0], tok[1]);
+  else if (!alias && n > 2 && ValidKey(tok[2])) snprintf(why, sizeof(why), "two options on one line (%s %s %s)", tok[0], tok[1], tok[2]);
+  else if (n > (alias ? 3 : 2)) snprintf(why, sizeof(why), "%s has more than one value (%s ...)", alias ? "alias" : tok[0], tok[alias ? 3 : 2]);
+  if (!why[0]) return 0;
+  if (w->loud) fprintf(stderr, "spcontact: error: %s line %d: %s; an options file takes one option per line with at most one value (a value with spaces in double quotes: -bc_1_value \"0.0015, 0.001\")\n", w->from, number, why);
+  return 1;
+}
+
 /* The tokens of an options file, comments removed, checked in order */
 static int CheckContents(FILE *fp, const Where *w)
 {
   char        line[MAX_LINE];
   const char *pending = NULL;
+  int         number = 0;
 
   while (fgets(line, sizeof(line), fp)) {
     char *rest = line, *tok;
+    if (CheckLine(line, ++number, w)) return 1;
     line[strcspn(line, "#!%")] = 0;
     while ((tok = NextToken(&rest)))
       if (Token(tok, &pending, w)) return 1;

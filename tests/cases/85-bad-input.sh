@@ -15,6 +15,8 @@ test_bad_input_catalogue() {
   printf -- '-options_file %s/outer.opts\n' "$CASE_DIR" > "$CASE_DIR/middle.opts"
   printf -- '-options_file %s/self.opts\n' "$CASE_DIR" > "$CASE_DIR/self.opts"
   printf -- '-load_steps 1\n-options_file\n' > "$CASE_DIR/dangling.opts"
+  printf -- '-load_steps 1\n-bc_1_value 0.0015, 0.001 # a value with a space, unquoted\n' > "$CASE_DIR/twovalues.opts"
+  printf -- '-load_steps 1 -output_fields false\n' > "$CASE_DIR/twoopts.opts"
   printf 'contact:\n  method: [alm\n' > "$CASE_DIR/unclosed.yaml"
   printf -- '- load_steps\n- 2\n' > "$CASE_DIR/list.yaml"
   printf 'options_file: input/hertz2d.opts\n' > "$CASE_DIR/named.yaml"
@@ -44,6 +46,7 @@ obstacle point not a number|input/hertz2d.opts|-contact_obstacle_0_point 0,nan
 zero obstacle normal|input/hertz2d.opts|-contact_obstacle_0_normal 0,0
 negative sphere radius|input/hertz2d.opts|-contact_obstacle_0_type sphere -contact_obstacle_0_radius -1
 sphere without a radius (said missing, not -1)|input/hertz2d.opts|-contact_obstacle_0_type sphere
+infinite sphere radius (ran to gap_error inf)|input/hertz2d.opts|-contact_obstacle_0_type sphere -contact_obstacle_0_radius inf
 unknown obstacle type|input/hertz2d.opts|-contact_obstacle_0_type cone
 plane without a point (no default origin)|input/block2d.opts|-contact_obstacle_1_type plane -contact_obstacle_1_normal 0,1
 plane without a normal (no default +y)|input/block2d.opts|-contact_obstacle_1_type plane -contact_obstacle_1_point 0,0
@@ -72,6 +75,8 @@ options file naming a missing options file|input/hertz2d.opts|-options_file @DIR
 the same two files deep|input/hertz2d.opts|-options_file @DIR@/middle.opts
 options file naming itself (a cycle)|input/hertz2d.opts|-options_file @DIR@/self.opts
 options file ending in -options_file|input/hertz2d.opts|-options_file @DIR@/dangling.opts
+options file line with two values (was PETSc's error wall)|input/friction_block2d.opts|-options_file @DIR@/twovalues.opts
+options file line with two options|input/hertz2d.opts|-options_file @DIR@/twoopts.opts
 YAML options file that does not parse|input/hertz2d.opts|-options_file_yaml @DIR@/unclosed.yaml
 YAML options file that is a list|input/hertz2d.opts|-options_file_yaml @DIR@/list.yaml
 YAML options file naming an options file (PETSc ignores it)|input/hertz2d.opts|-options_file_yaml @DIR@/named.yaml
