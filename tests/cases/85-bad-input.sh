@@ -203,6 +203,16 @@ CASES
 
 # A misspelt option is reported (one warning line per unused option) and the run is otherwise
 # the default one; -options_left false silences the report
+# The load-balance refusal on 1, 2 and 3 ranks (each rank sums the facets it owns): the same line
+test_bad_input_balance_ranks() {
+  local rc=0 np
+  for np in 1 2 3; do
+    spc "$CASE_DIR/b$np.txt" $np -options_file input/block3d.opts -bc_0_type traction -bc_0_value 0.001,0,0 -output_dir "$CASE_DIR" -output_name b$np
+    assert_eq "balance refusal on $np rank(s)" "$(grep -c "^spcontact: error: the loads' net force at load factor 1 has a part (0.001, 0, 0) that no support can hold" "$CASE_DIR/b$np.txt")" 1 || rc=1
+  done
+  return $rc
+}
+
 test_bad_input_unused_option() {
   local rc=0
   spc "$CASE_DIR/typo.txt" 1 -options_file input/block2d.opts -contact_methd penalty -output_dir "$CASE_DIR" -output_name typo || rc=1
