@@ -34,16 +34,13 @@ static PetscErrorCode AddNetForce(DM dm, PetscInt dim, const SPBC *bc, PetscReal
   PetscFunctionBeginUser;
   PetscCall(SPMeshGetLabelFacets(dm, bc->label, bc->nvalues, bc->values, &n, &facets));
   for (PetscInt k = 0; k < n; ++k) {
-    PetscReal nf[3] = {0, 0, 0}, x[3] = {0, 0, 0}, area, t[3] = {0, 0, 0};
+    PetscReal nf[3] = {0, 0, 0}, x[3] = {0, 0, 0}, area, p = bc->value[0];
     PetscCall(FacetGeometry(dm, dim, facets[k], nf, x, &area));
     measure += area;
     if (bc->type != SP_BC_PRESSURE) continue;
-    {
-      PetscReal p = bc->value[0];
-      for (PetscInt d = 0; d < dim; ++d) p += bc->gradient[d] * x[d];
-      for (PetscInt d = 0; d < dim; ++d) t[d] = -p * nf[d] * area, F[d] += t[d];
-      *scale += PetscAbsReal(p) * area;
-    }
+    for (PetscInt d = 0; d < dim; ++d) p += bc->gradient[d] * x[d];
+    for (PetscInt d = 0; d < dim; ++d) F[d] -= p * nf[d] * area;
+    *scale += PetscAbsReal(p) * area;
   }
   PetscCall(PetscFree(facets));
   if (bc->type == SP_BC_TRACTION)

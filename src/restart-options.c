@@ -137,9 +137,10 @@ static PetscErrorCode CompareOneWay(MPI_Comm comm, const char file[], const char
 
   PetscFunctionBeginUser;
   for (const char *p = a; *p; p = strchr(p, '\n') ? strchr(p, '\n') + 1 : p + strlen(p)) {
-    const char *found;
-    (void)SPOptionsNameCopy(p, 0, name, sizeof(name));
-    (void)Find(a, name, va, sizeof(va));
+    const size_t n = SPOptionsNameCopy(p, 0, name, sizeof(name));
+    const size_t m = strcspn(p + n + 1, "\n"); /* the line's value, after "name " */
+    const char  *found;
+    PetscCall(PetscSNPrintf(va, sizeof(va), "%.*s", (int)PetscMin(m, sizeof(va) - 1), p + n + 1));
     found = Find(b, name, vb, sizeof(vb));
     PetscCheck(found, comm, PETSC_ERR_USER_INPUT, "-restart %s: %s %s is given %s and not %s; restart with the interrupted run's options (the problem would change)", file, name, va, there ? "there" : "here", there ? "here" : "there");
     PetscCheck(SameValue(va, vb), comm, PETSC_ERR_USER_INPUT, "-restart %s: %s is %s there and %s here; restart with the interrupted run's options (the problem would change)", file, name, there ? va : vb, there ? vb : va);
