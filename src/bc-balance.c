@@ -5,7 +5,9 @@
    react, or load, in directions that depend on the solution). A net force outside the span (a
    shear on a block on a frictionless plane with no condition fixing that direction) has no
    equilibrium: the solve would stall and cut back to -load_min_increment without saying why.
-   A necessary condition only: moments and where the supports sit are not checked. */
+   A plane only pushes: its reaction is a non-negative multiple of its normal, so a load pulling
+   the body off its planes (a suction on B1's top) is refused too. A necessary condition only:
+   moments and where the supports sit are not checked. */
 #include <spcontact-impl.h>
 
 /* Outward unit normal, centroid and measure of a boundary facet (outward: away from its cell) */
@@ -78,8 +80,8 @@ static PetscBool Applies(SPProblem p, SPContact c)
   return PETSC_TRUE;
 }
 
-/* The Dirichlet components and the planes' normals: an orthonormal basis q[*nq] of the reactions */
-static void Reactions(SPProblem p, SPContact c, PetscReal q[][3], PetscInt *nq)
+/* The Dirichlet components: an orthonormal basis q[*nq] of the reactions of either sign */
+static void Reactions(SPProblem p, PetscReal q[][3], PetscInt *nq)
 {
   *nq = 0;
   for (PetscInt i = 0; i < p->nbc; ++i)
@@ -88,7 +90,82 @@ static void Reactions(SPProblem p, SPContact c, PetscReal q[][3], PetscInt *nq)
       e[p->bc[i].comps[k]] = 1.0;
       AddDirection(p->dim, e, q, nq);
     }
-  for (PetscInt k = 0; c && c->enabled && k < c->nob; ++k) AddDirection(p->dim, c->ob[k].normal, q, nq);
+}
+
+/* v with its part in the span of q[nq] removed */
+static void RemoveSpan(PetscInt dim, PetscReal v[3], PetscReal q[][3], PetscInt nq)
+{
+  for (PetscInt k = 0; k < nq; ++k) {
+    PetscReal dot = 0.0;
+    for (PetscInt d = 0; d < dim; ++d) dot += v[d] * q[k][d];
+    for (PetscInt d = 0; d < dim; ++d) v[d] -= dot * q[k][d];
+  }
+}
+
+/* x = a^-1 b for m <= 3 (a symmetric positive definite: Gaussian elimination without pivoting) */
+static void SolveSmall(PetscInt m, PetscReal a[][3], PetscReal b[], PetscReal x[])
+{
+  for (PetscInt k = 0; k < m; ++k)
+    for (PetscInt i = k + 1; i < m; ++i) {
+      const PetscReal l = a[i][k] / a[k][k];
+      for (PetscInt j = k; j < m; ++j) a[i][j] -= l * a[k][j];
+      b[i] -= l * b[k];
+    }
+  for (PetscInt i = m - 1; i >= 0; --i) {
+    x[i] = b[i];
+    for (PetscInt j = i + 1; j < m; ++j) x[i] -= a[i][j] * x[j];
+    x[i] /= a[i][i];
+  }
+}
+
+/* r = f + sum lambda_k n_k over the columns n_k in `set`, lambda the least-squares multipliers;
+   false if the columns are dependent or a multiplier is negative (a plane that would pull) */
+static PetscBool ConeResidual(PetscInt dim, const PetscReal f[3], PetscReal n[][3], PetscInt nn, PetscInt set, PetscReal r[3])
+{
+  PetscReal qs[3][3], a[3][3], b[3], lam[3] = {0, 0, 0};
+  PetscInt  idx[3], m = 0, nq = 0;
+
+  for (PetscInt k = 0; k < nn; ++k)
+    if (set >> k & 1) {
+      if (m == dim) return PETSC_FALSE;
+      idx[m++] = k;
+    }
+  for (PetscInt i = 0; i < m; ++i) { /* dependent columns: their cone is reached by a smaller set */
+    AddDirection(dim, n[idx[i]], qs, &nq);
+    if (nq != i + 1) return PETSC_FALSE;
+  }
+  for (PetscInt i = 0; i < m; ++i) { /* the normal equations N^T N lambda = -N^T f */
+    b[i] = 0.0;
+    for (PetscInt d = 0; d < dim; ++d) b[i] -= n[idx[i]][d] * f[d];
+    for (PetscInt j = 0; j < m; ++j) {
+      a[i][j] = 0.0;
+      for (PetscInt d = 0; d < dim; ++d) a[i][j] += n[idx[i]][d] * n[idx[j]][d];
+    }
+  }
+  SolveSmall(m, a, b, lam);
+  for (PetscInt d = 0; d < dim; ++d) r[d] = f[d];
+  for (PetscInt i = 0; i < m; ++i) {
+    if (lam[i] < 0.0) return PETSC_FALSE;
+    for (PetscInt d = 0; d < dim; ++d) r[d] += lam[i] * n[idx[i]][d];
+  }
+  return PETSC_TRUE;
+}
+
+/* f minus its projection on the cone of the planes' pushes n[nn] (non-negative multiples):
+   the smallest residual over the sets of independent normals whose multipliers are all >= 0,
+   which is the projection (Caratheodory: the nearest point of a cone lies in the cone of at most
+   dim independent generators) */
+static void RemoveCone(PetscInt dim, PetscReal f[3], PetscReal n[][3], PetscInt nn)
+{
+  PetscReal best[3] = {f[0], f[1], f[2]}, bestLen = PETSC_MAX_REAL;
+
+  for (PetscInt set = 0; set < (1 << nn); ++set) {
+    PetscReal r[3] = {0, 0, 0}, len = 0.0;
+    if (!ConeResidual(dim, f, n, nn, set, r)) continue;
+    for (PetscInt d = 0; d < dim; ++d) len += r[d] * r[d];
+    if (len < bestLen) bestLen = len, best[0] = r[0], best[1] = r[1], best[2] = r[2];
+  }
+  for (PetscInt d = 0; d < dim; ++d) f[d] = best[d];
 }
 
 /* Net force of every Neumann condition at full amplitude (F[4 i + 0..2]) and its scale (F[4 i + 3]),
@@ -107,8 +184,10 @@ static PetscErrorCode ConditionForces(DM dm, SPProblem p, PetscReal F[])
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* The part of the net force at load factor `load` outside the reactions' span; false if negligible */
-static PetscBool Unheld(SPProblem p, const PetscReal F[], PetscReal load, PetscReal q[][3], PetscInt nq, PetscReal perp[3])
+/* The part of the net force at load factor `load` that no support can hold: outside the span of
+   the Dirichlet directions q[nq] and the cone of the planes' pushes n[nn] (both with the span
+   removed); false if negligible */
+static PetscBool Unheld(SPProblem p, const PetscReal F[], PetscReal load, PetscReal q[][3], PetscInt nq, PetscReal n[][3], PetscInt nn, PetscReal perp[3])
 {
   PetscReal scale = 0.0, len = 0.0;
 
@@ -118,13 +197,22 @@ static PetscBool Unheld(SPProblem p, const PetscReal F[], PetscReal load, PetscR
     for (PetscInt d = 0; d < p->dim; ++d) perp[d] += a * F[4 * i + d];
     scale += a * F[4 * i + 3];
   }
-  for (PetscInt k = 0; k < nq; ++k) {
-    PetscReal dot = 0.0;
-    for (PetscInt d = 0; d < p->dim; ++d) dot += perp[d] * q[k][d];
-    for (PetscInt d = 0; d < p->dim; ++d) perp[d] -= dot * q[k][d];
-  }
+  RemoveSpan(p->dim, perp, q, nq);
+  RemoveCone(p->dim, perp, n, nn);
   for (PetscInt d = 0; d < p->dim; ++d) len += perp[d] * perp[d];
   return PetscSqrtReal(len) > 1e-8 * scale ? PETSC_TRUE : PETSC_FALSE;
+}
+
+/* Whether the unheld part perp lies along the planes' normals: then the loads pull the body off */
+static PetscBool PullsOff(PetscInt dim, const PetscReal perp[3], PetscReal n[][3], PetscInt nn)
+{
+  PetscReal qn[3][3], w[3] = {perp[0], perp[1], perp[2]}, len = 0.0, len0 = 0.0;
+  PetscInt  nqn = 0;
+
+  for (PetscInt k = 0; k < nn && nqn < dim; ++k) AddDirection(dim, n[k], qn, &nqn);
+  RemoveSpan(dim, w, qn, nqn);
+  for (PetscInt d = 0; d < dim; ++d) len += w[d] * w[d], len0 += perp[d] * perp[d];
+  return nn > 0 && len <= 1e-12 * len0 ? PETSC_TRUE : PETSC_FALSE;
 }
 
 /* Collective, after the contact set-up: one line if the loads cannot be held. The net force is
@@ -133,17 +221,22 @@ PetscErrorCode SPBCCheckBalance(DM dm, SPProblem p, SPContact c)
 {
   MPI_Comm  comm = PetscObjectComm((PetscObject)dm);
   PetscInt  dim  = p->dim, nq;
-  PetscReal F[4 * SP_MAX_BC], q[6][3], perp[3], load = 1.0;
+  PetscReal F[4 * SP_MAX_BC], q[3][3], n[SP_MAX_OBSTACLES][3], perp[3], load = 1.0;
+  PetscInt  nn = 0;
   PetscBool unheld;
   char      fixed[64] = "", force[96];
 
   PetscFunctionBeginUser;
   if (!Applies(p, c)) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(ConditionForces(dm, p, F));
-  Reactions(p, c, q, &nq);
-  unheld = Unheld(p, F, load, q, nq, perp);
+  Reactions(p, q, &nq);
+  for (PetscInt k = 0; c && c->enabled && k < c->nob; ++k, ++nn) { /* the planes' pushes, the span removed */
+    for (PetscInt d = 0; d < 3; ++d) n[nn][d] = d < dim ? c->ob[k].normal[d] : 0.0;
+    RemoveSpan(dim, n[nn], q, nq);
+  }
+  unheld = Unheld(p, F, load, q, nq, n, nn, perp);
   for (PetscInt i = 0; i < p->nbc && !unheld; ++i)
-    for (PetscInt e = 0; e < 2 && !unheld; ++e) load = p->bc[i].ramp[e], unheld = load > 0.0 && Unheld(p, F, load, q, nq, perp);
+    for (PetscInt e = 0; e < 2 && !unheld; ++e) load = p->bc[i].ramp[e], unheld = load > 0.0 && Unheld(p, F, load, q, nq, n, nn, perp);
   if (!unheld) PetscFunctionReturn(PETSC_SUCCESS);
   for (PetscInt i = 0; i < p->nbc; ++i)
     for (PetscInt k = 0; p->bc[i].type == SP_BC_DIRICHLET && k < p->bc[i].ncomps; ++k) {
@@ -153,5 +246,6 @@ PetscErrorCode SPBCCheckBalance(DM dm, SPProblem p, SPContact c)
       PetscCall(PetscStrlcat(fixed, name, sizeof(fixed)));
     }
   PetscCall(PetscSNPrintf(force, sizeof(force), dim == 2 ? "(%.4g, %.4g)" : "(%.4g, %.4g, %.4g)", (double)perp[0], (double)perp[1], (double)perp[2]));
-  SETERRQ(comm, PETSC_ERR_USER_INPUT, "the loads' net force at load factor %.6g has a part %s that no support can hold (Dirichlet conditions fix %s; %s): no equilibrium exists. %s", (double)load, force, fixed[0] ? fixed : "no component", c && c->enabled ? "the obstacles are frictionless planes, which push along their normals only" : "there is no contact", c && c->enabled ? "Add friction (-contact_friction_mu), a Dirichlet condition in that direction, or loads that balance" : "Add a Dirichlet condition in that direction, or loads that balance");
+  PetscCheck(!PullsOff(dim, perp, n, nn), comm, PETSC_ERR_USER_INPUT, "the loads' net force at load factor %.6g has a part %s that pulls the body off its obstacles (Dirichlet conditions fix %s; frictionless planes only push, along their normals): no equilibrium exists. Reverse that load, or add a Dirichlet condition in that direction", (double)load, force, fixed[0] ? fixed : "no component");
+  SETERRQ(comm, PETSC_ERR_USER_INPUT, "the loads' net force at load factor %.6g has a part %s that no support can hold (Dirichlet conditions fix %s; %s): no equilibrium exists. %s", (double)load, force, fixed[0] ? fixed : "no component", c && c->enabled ? "the obstacles are frictionless planes, which only push, along their normals" : "there is no contact", c && c->enabled ? "Add friction (-contact_friction_mu), a Dirichlet condition in that direction, or loads that balance" : "Add a Dirichlet condition in that direction, or loads that balance");
 }

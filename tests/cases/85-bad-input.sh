@@ -56,6 +56,9 @@ net shear on a frictionless plane, no support in x (F1a with mu 0; was 10 cut-ba
 net side pressure on a frictionless plane (pressure's outward normal)|input/friction_block2d.opts|-contact_friction_mu 0 -bc_1_type pressure -bc_1_values 2 -bc_1_value 0.001
 3D net shear, Dirichlet fixing y only|input/block3d.opts|-bc_0_type traction -bc_0_value 0.001,0,0
 net shear while a load curve holds the balancing pressure back (load factor 0.5)|input/block2d.opts|-bc_0_components 1 -bc_1_type traction -bc_1_value 0.001,0 -bc_1_ramp 0,0.5 -bc_2_type pressure -bc_2_values 2 -bc_2_value 0.001 -bc_2_ramp 0.5,1
+suction on B1's top pulls the block off its plane (the sign of a plane's push; was 10 cut-backs)|input/block2d.opts|-bc_1_value -0.01
+3D suction pulls the block off its plane, x and y fixed|input/block3d.opts|-bc_2_value -0.01
+sideways push on a block in a V of two frictionless planes (one plane would have to pull)|input/block2d.opts|-bc_0_type traction -bc_0_value 0,0 -bc_1_type traction -bc_1_value 0.001,0 -contact_obstacle_0_normal 1,1 -contact_obstacle_1_type plane -contact_obstacle_1_point 1,0 -contact_obstacle_1_normal -1,1
 net shear without contact (advice without friction)|input/elastic2d.opts|-bc_1_components 1 -bc_2_value 1,0.5
 output name absolute (was put under -output_dir)|input/hertz2d.opts|-output_name /tmp/spcontact-abs/run
 unknown method (typo)|input/hertz2d.opts|-contact_method shifty
