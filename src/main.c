@@ -2,6 +2,7 @@ static const char help[] = "spcontact: parallel FEM contact mechanics with the s
                            "Run `spcontact -help` for every option; the README documents them.\n";
 
 #define _POSIX_C_SOURCE 200112L /* setenv */
+#include <ctype.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
@@ -76,27 +77,43 @@ static int EveryRankFailed(void)
 }
 
 /* PETSc's messages for a value it cannot read name the value, not the option ("Input string abc
-   has no numeric value", "Unknown logical value: abc"): the option given that value is found in
-   the database and named: "-contact_alpha abc: not a number" */
+   has no numeric value", "Unknown logical value: abc"): the option whose value, or one element of
+   whose comma list, is exactly that string (spaces included) is found in the database and named:
+   "-contact_alpha abc: not a number", "-bc_1_value \"0.0015,0 \": its element \"0 \" is not a
+   number (a space inside a value)" */
+static PetscBool OptionHolding(const char bad[], char name[], size_t nname, char whole[], size_t nwhole)
+{
+  char *all = NULL, *tok, *save = NULL;
+
+  name[0] = 0;
+  if (PetscOptionsGetAll(NULL, &all)) return PETSC_FALSE;
+  for (tok = strtok_r(all, " ", &save); tok && !name[0]; tok = strtok_r(NULL, " ", &save)) {
+    const char *val = NULL;
+    PetscBool   set = PETSC_FALSE;
+    size_t      len = strlen(bad);
+    if (tok[0] != '-' || !isalpha((unsigned char)tok[1])) continue;
+    if (PetscOptionsFindPair(NULL, NULL, tok, &val, &set) || !set || !val) continue;
+    for (const char *e = val; e && !name[0]; e = strchr(e, ',') ? strchr(e, ',') + 1 : NULL) /* each element of the list */
+      if (!strncmp(e, bad, len) && (e[len] == ',' || e[len] == 0)) (void)snprintf(name, nname, "%s", tok), (void)snprintf(whole, nwhole, "%s", val);
+  }
+  (void)PetscFree(all);
+  return name[0] ? PETSC_TRUE : PETSC_FALSE;
+}
+
 static void NameTheOption(char msg[], size_t n)
 {
   static const char *const lead[2] = {"Input string ", "Unknown logical value: "};
   static const char *const what[2] = {"not a number", "not true or false"};
-  char                     value[128] = "", *all = NULL, *tok, *save = NULL, prev[256] = "", name[256] = "";
+  char                     bad[128] = "", name[256], whole[256];
 
   for (int k = 0; k < 2; ++k) {
-    size_t len;
+    const char *kind = strstr(msg, "integer") ? "not an integer" : what[k], *end;
     if (strncmp(msg, lead[k], strlen(lead[k]))) continue;
-    (void)snprintf(value, sizeof(value), "%s", msg + strlen(lead[k]));
-    len = strcspn(value, " ");
-    value[len] = 0;
-    if (!len || PetscOptionsGetAll(NULL, &all)) return;
-    for (tok = strtok_r(all, " ", &save); tok; tok = strtok_r(NULL, " ", &save)) {
-      if (!strcmp(tok, value) && prev[0] == '-') (void)snprintf(name, sizeof(name), "%s", prev);
-      (void)snprintf(prev, sizeof(prev), "%s", tok);
-    }
-    (void)PetscFree(all);
-    if (name[0]) (void)snprintf(msg, n, "%s %s: %s", name, value, strstr(msg, "integer") ? "not an integer" : what[k]);
+    (void)snprintf(bad, sizeof(bad), "%s", msg + strlen(lead[k]));
+    if (k == 0 && (end = strstr(bad, " has no ")) != NULL) bad[end - bad] = 0; /* the value as PETSc read it, spaces kept */
+    if (!bad[0] || !OptionHolding(bad, name, sizeof(name), whole, sizeof(whole))) return;
+    if (!strcmp(bad, whole) && !strpbrk(bad, " \t")) (void)snprintf(msg, n, "%s %s: %s", name, bad, kind);
+    else (void)snprintf(msg, n, "%s \"%s\": %s \"%s\" is %s%s", name, whole, strcmp(bad, whole) ? "its element" : "the value", bad, kind, strpbrk(bad, " \t") ? " (a space inside a value: remove it)" : "");
     return;
   }
 }

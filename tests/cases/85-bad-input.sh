@@ -387,6 +387,12 @@ test_bad_input_value_names_option() {
 -load_steps 2.5|-load_steps 2.5: not an integer
 -contact_two_pass maybe|-contact_two_pass maybe: not true or false
 -ksp_rtol 1e-3x|-ksp_rtol 1e-3x: not a number
+-contact_obstacle_0_point 0,abc|-contact_obstacle_0_point "0,abc": its element "abc" is not a number
 CASES
+  # a space inside a quoted value: the option holding it is named, not another with the value 0
+  printf -- '-material_nu 0\n-contact_obstacle_0_point "0,0 "\n' >"$CASE_DIR/space.opts"
+  timeout 60 $SPC -options_file input/hertz2d.opts -options_file "$CASE_DIR/space.opts" -output_dir "$CASE_DIR" >/dev/null 2>"$CASE_DIR/e.txt"; code=$?
+  assert_eq "exit code (space)" "$code" 1 || rc=1
+  assert_eq "line (space)" "$(cat "$CASE_DIR/e.txt")" 'spcontact: error: -contact_obstacle_0_point "0,0 ": its element "0 " is not a number (a space inside a value: remove it)' || rc=1
   return $rc
 }
