@@ -95,6 +95,7 @@ PetscErrorCode SPAppSetUp(SPApp a)
   PetscBool help;
 
   PetscFunctionBeginUser;
+  PetscCall(SPOptionsCheckNamedValues(a->comm));
   PetscCall(LoadingSetFromOptions(a));
   PetscCall(PetscLogStagePush(a->log.mesh));
   PetscCall(SPMeshCreate(a->comm, &a->dm));

@@ -11,7 +11,11 @@
      first solve). PETSc's flags, which take no value, keep working, and so does every PETSc
      option outside that list.
    The options' names come from PetscOptionsGetAll's string; spcontact's are checked only once
-   read, which leaves the report of unused (misspelt) options as it was. */
+   read, which leaves the report of unused (misspelt) options as it was.
+   PETSc's named values (PETSC_DEFAULT, DEFAULT, PETSC_DECIDE, DECIDE, any case) are refused
+   before the set-up in the same options (but those taking a word: a type, label, name, file):
+   PETSc reads them as -2 and -1 and stores them, so "-contact_penalty PETSC_DEFAULT" was refused
+   as "-contact_penalty -2" and "-ksp_rtol PETSC_DEFAULT" set rtol -2. */
 #include <ctype.h>
 #include <spcontact-impl.h>
 
@@ -72,6 +76,47 @@ static PetscErrorCode CheckOne(MPI_Comm comm, const char name[], const char rest
     if (check) PetscCall(PetscOptionsUsed(NULL, name + 1, &check)); /* the database keeps names without the dash */
   } else check = InFamily(name, PetscFamilies, PETSC_STATIC_ARRAY_LENGTH(PetscFamilies)) && HasTail(name, NumericTails, PETSC_STATIC_ARRAY_LENGTH(NumericTails)) ? PETSC_TRUE : PETSC_FALSE;
   PetscCheck(!check || HasValue(rest), comm, PETSC_ERR_USER_INPUT, "%s needs a value (-help gives its meaning and default)", name);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static const char *const WordTails[] = {"_type", "_label", "_labels", "_name", "_dir", "_file", "_model", "_law", "_method", "_accel", "_tangent", "_partitioner", "-restart"};
+
+/* Refused if name is a numeric option (as in CheckOne, read or not) and its value (the next token
+   of the string, rest) is one of PETSc's named values */
+static PetscErrorCode CheckNamed(MPI_Comm comm, const char name[], const char rest[])
+{
+  static const char *const named[] = {"petsc_default", "default", "petsc_decide", "decide"};
+  char                     val[32] = "";
+  size_t                   n;
+
+  PetscFunctionBeginUser;
+  if (!HasValue(rest) || HasTail(name, WordTails, PETSC_STATIC_ARRAY_LENGTH(WordTails)) || !strcmp(name, "-restart")) PetscFunctionReturn(PETSC_SUCCESS);
+  if (InFamily(name, Families, PETSC_STATIC_ARRAY_LENGTH(Families)) ? IsFlag(name) : !(InFamily(name, PetscFamilies, PETSC_STATIC_ARRAY_LENGTH(PetscFamilies)) && HasTail(name, NumericTails, PETSC_STATIC_ARRAY_LENGTH(NumericTails)))) PetscFunctionReturn(PETSC_SUCCESS);
+  n = strcspn(rest + 1, " ");
+  if (n >= sizeof(val)) PetscFunctionReturn(PETSC_SUCCESS);
+  for (size_t j = 0; j < n; ++j) val[j] = (char)tolower((unsigned char)rest[1 + j]);
+  for (size_t k = 0; k < PETSC_STATIC_ARRAY_LENGTH(named); ++k)
+    PetscCheck(strcmp(val, named[k]), comm, PETSC_ERR_USER_INPUT, "%s %.*s: a named PETSc value is read as the number %d here, not as the default; leave the option out for its default (-help shows it), or give a number", name, (int)n, rest + 1, k < 2 ? (int)PETSC_DEFAULT : (int)PETSC_DECIDE);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Collective, before the set-up reads any option: PETSc's named values in numeric options */
+PetscErrorCode SPOptionsCheckNamedValues(MPI_Comm comm)
+{
+  char *all;
+  char  name[256];
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsGetAll(NULL, &all));
+  for (size_t i = 0; all[i]; ++i) {
+    size_t n;
+    if (!SPOptionsNameAt(all, i, "-") || !isalpha((unsigned char)all[i + 1])) continue;
+    n = SPOptionsNameCopy(all, i, name, sizeof(name));
+    for (size_t j = 0; j < n; ++j) name[j] = (char)tolower((unsigned char)name[j]);
+    PetscCall(CheckNamed(comm, name, all + i + n));
+    i += n - 1;
+  }
+  PetscCall(PetscFree(all));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -60,6 +60,9 @@ suction on B1's top pulls the block off its plane (the sign of a plane's push; w
 3D suction pulls the block off its plane, x and y fixed|input/block3d.opts|-bc_2_value -0.01
 sideways push on a block in a V of two frictionless planes (one plane would have to pull)|input/block2d.opts|-bc_0_type traction -bc_0_value 0,0 -bc_1_type traction -bc_1_value 0.001,0 -contact_obstacle_0_normal 1,1 -contact_obstacle_1_type plane -contact_obstacle_1_point 1,0 -contact_obstacle_1_normal -1,1
 net shear without contact (advice without friction)|input/elastic2d.opts|-bc_1_components 1 -bc_2_value 1,0.5
+PETSC_DEFAULT for a computed default (was refused as -contact_penalty -2)|input/hertz2d.opts|-contact_penalty PETSC_DEFAULT
+DECIDE for spcontact's real (read as -1)|input/hertz2d.opts|-contact_alpha decide
+PETSC_DEFAULT for PETSc's own tolerance (PETSc stores rtol -2)|input/hertz2d.opts|-ksp_rtol PETSC_DEFAULT
 output name absolute (was put under -output_dir)|input/hertz2d.opts|-output_name /tmp/spcontact-abs/run
 unknown method (typo)|input/hertz2d.opts|-contact_method shifty
 E negative|input/hertz2d.opts|-material_E -1
