@@ -87,12 +87,14 @@ static PetscErrorCode FindDirectory(SPOutput o, PetscInt *k)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* path removed if it is a regular file (what a run writes; not a directory or a link) */
-static void RemoveFile(const char path[])
+/* path removed if it is a regular file (what a run writes; not a directory), or a symbolic link
+   and links (the link alone goes, not what it points at: a run writing its .part file through a
+   link would overwrite that file) */
+static void RemoveFile(const char path[], PetscBool links)
 {
   struct stat st;
 
-  if (!lstat(path, &st) && S_ISREG(st.st_mode)) (void)unlink(path);
+  if (!lstat(path, &st) && (S_ISREG(st.st_mode) || (links && S_ISLNK(st.st_mode)))) (void)unlink(path);
 }
 
 /* Rank 0: an earlier run's files of this name removed (tail "" the final names, ".part" the
@@ -106,7 +108,7 @@ static PetscErrorCode RemoveEarlier(SPOutput o, const char tail[])
   PetscFunctionBeginUser;
   for (PetscInt f = 0; f < NFILES; ++f) {
     PetscCall(PetscSNPrintf(path, sizeof(path), "%s%s%s", o->prefix, Files[f], tail));
-    RemoveFile(path);
+    RemoveFile(path, tail[0] ? PETSC_TRUE : PETSC_FALSE); /* a link at a final name is the user's */
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }

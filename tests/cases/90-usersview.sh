@@ -186,6 +186,13 @@ test_output_names() {
   assert_eq "status, 1030 steps" "$(sval "$CASE_DIR/many.txt" status) $(sval "$CASE_DIR/many.txt" load_steps)" "complete 1030" || rc=1
   assert_eq "steps in the xmf" "$(grep -c '<Grid Name="step_' "$d/many.xmf")" 1030 || rc=1
   assert_eq "last step's time" "$(grep -o '<Time Value="[^"]*"' "$d/many.xmf" | tail -1)" '<Time Value="1"' || rc=1
+  # a symbolic link at a .part name goes (the link, not what it points at); one at a final name is
+  # replaced by the complete run's file, its target untouched
+  echo precious > "$d/target" && echo kept > "$d/target2"
+  ln -s "$d/target" "$d/link.h5.part" && ln -s "$d/target2" "$d/link.csv"
+  spc "$CASE_DIR/link.txt" 1 -options_file input/block2d.opts -output_dir "$d" -output_name link -quiet || return 1
+  assert_eq "target of a .part link untouched" "$(cat "$d/target") $(cat "$d/target2")" "precious kept" || rc=1
+  assert_eq "results are regular files" "$(test -f "$d/link.h5" && test ! -L "$d/link.h5" && test ! -L "$d/link.csv" && echo yes)" yes || rc=1
   return $rc
 }
 
