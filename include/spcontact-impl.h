@@ -208,6 +208,7 @@ typedef struct {
   PetscBool     held;          /* active before this boundary's shift update: its linear branch is held (branchHold) */
   PetscInt      inactiveCount; /* consecutive inactive iterates (shift reset after two) */
   PetscInt      flips;         /* stick/slip changes in this step (status frozen after 3) */
+  PetscBool     released;      /* its frozen direction was let go once in this step (SPFrictionReleaseFrozen) */
   PetscInt      flipsN;        /* open/closed changes in this Newton solve (SPContactChatterHeld) */
   PetscBool     holdOff;       /* the chatter hold let it go in this solve: held at the shift's clip (s = 0) with an open gap */
   PetscReal     dir[2];        /* slip direction at the last bookkeeping (basis T) */
@@ -380,6 +381,7 @@ PETSC_EXTERN void           SPFrictionStepStart(SPContact);
 PETSC_EXTERN PetscReal      SPFrictionStepLimit(SPContact);
 PETSC_EXTERN PetscErrorCode SPFrictionBookkeep(SPContact, PetscBool);
 PETSC_EXTERN PetscBool      SPFrictionConverged(SPContact);
+PETSC_EXTERN PetscErrorCode SPFrictionReleaseFrozen(SPContact, PetscBool *, PetscBool *);
 PETSC_EXTERN PetscErrorCode SPFrictionSettled(SPContact, PetscBool *);
 PETSC_EXTERN PetscErrorCode SPFrictionJumped(SPContact, PetscReal, PetscBool *);
 PETSC_EXTERN PetscErrorCode SPFrictionForces(SPContact, Vec, PetscReal[]);

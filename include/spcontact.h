@@ -77,6 +77,8 @@ typedef struct {
   PetscReal maxStickCreep;  /* friction: max |Dg_T| over stick points in the current step */
   PetscReal maxSlipShiftResidual; /* friction: max over slip points of eps_T |s_T' - s_T| / (mu p), s_T' one more update at the state of the last one */
   PetscReal tangentialForce[3]; /* friction: resultant tangential force on the slave bodies */
+  PetscInt  frozenPoints;       /* friction: chattering points slipping in their frozen direction */
+  PetscReal frozenDeviation;    /* friction: max over them of |t_return - t_frozen| / (mu p), t_return the return map's */
 } SPContactStats;
 
 PETSC_EXTERN PetscErrorCode SPContactCreate(DM, SPProblem, PetscLogEvent, SPContact *);

@@ -267,6 +267,7 @@ static void AnchorPoint(SPContact c, PetscInt i, const PetscReal tg[], PetscBool
   st->anchored   = e != SP_ELEM_NONE ? PETSC_TRUE : PETSC_FALSE;
   st->fresh      = st->anchored && !SPContactPointActive(c, i) ? PETSC_TRUE : PETSC_FALSE;
   st->flips    = 0;
+  st->released = PETSC_FALSE;
   st->tT[0] = st->tT[1] = st->sT[0] = st->sT[1] = 0.0;
   pt->geo.dgT[0] = pt->geo.dgT[1] = 0.0;
   pt->geo.anchorLost = PETSC_FALSE;
@@ -545,6 +546,22 @@ PetscErrorCode SPFrictionJumped(SPContact c, PetscReal gapError, PetscBool *jump
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* A chattering point slipping in its frozen direction (t): how far its traction is from the
+   return map's at the same state, relative to mu p (0 where the frozen direction is the slip's) */
+static PetscReal FrozenDeviation(SPContact c, PetscInt i, const PetscReal t[])
+{
+  const SPContactPoint *pt = &c->pt[i];
+  const PetscInt        nt = c->dim - 1;
+  PetscReal             p, k, y[2] = {0, 0}, tr[2] = {0, 0}, d[2] = {0, 0};
+
+  SPContactPointTraction(c, i, &p, &k);
+  if (pt->geo.mu * p <= 0.0) return 0.0;
+  for (PetscInt a = 0; a < nt; ++a) y[a] = -pt->epsT * (pt->geo.dgT[a] + pt->st.sT[a]);
+  (void)SPCoulombReturn(nt, y, pt->geo.mu * p, tr);
+  for (PetscInt a = 0; a < nt; ++a) d[a] = tr[a] - t[a];
+  return SPNorm(nt, d) / (pt->geo.mu * p);
+}
+
 /* Status (open / stick / slip) of every point at the evaluated state, flips, and the friction
    figures of the iterate: stick and slip counts, status changes (with `compare`), max stick creep
    since the points stuck (the committed creep plus this step's) relative to h (for the
@@ -552,8 +569,8 @@ PetscErrorCode SPFrictionJumped(SPContact c, PetscReal gapError, PetscBool *jump
 PetscErrorCode SPFrictionBookkeep(SPContact c, PetscBool compare)
 {
   const PetscInt dim = c->dim;
-  PetscInt       n[3] = {0, 0, 0}, nall[3];
-  PetscReal      r[2] = {0, 0}, rall[2];
+  PetscInt       n[4] = {0, 0, 0, 0}, nall[4];
+  PetscReal      r[3] = {0, 0, 0}, rall[3];
 
   PetscFunctionBeginUser;
   for (PetscInt i = 0; i < c->n; ++i) {
@@ -579,6 +596,7 @@ PetscErrorCode SPFrictionBookkeep(SPContact c, PetscBool compare)
       pt->st.reversed = compare && pt->st.status == SP_POINT_SLIP && SPDot(dim - 1, m, pt->st.dir) < 0.0 ? PETSC_TRUE : PETSC_FALSE;
       if (pt->st.reversed) n[2]++;
       pt->st.dir[0] = m[0], pt->st.dir[1] = m[1];
+      if (pt->st.flips > c->maxFlips) n[3]++, r[2] = PetscMax(r[2], FrozenDeviation(c, i, t));
     }
     pt->st.status = st;
     if (pt->geo.mu <= 0.0 || st == SP_POINT_OPEN) continue;
@@ -588,8 +606,10 @@ PetscErrorCode SPFrictionBookkeep(SPContact c, PetscBool compare)
     r[0]  = PetscMax(r[0], creep / pt->h);
     r[1]  = PetscMax(r[1], creep);
   }
-  PetscCallMPI(MPI_Allreduce(n, nall, 3, MPIU_INT, MPI_SUM, PetscObjectComm((PetscObject)c->dm)));
-  PetscCallMPI(MPI_Allreduce(r, rall, 2, MPIU_REAL, MPI_MAX, PetscObjectComm((PetscObject)c->dm)));
+  PetscCallMPI(MPI_Allreduce(n, nall, 4, MPIU_INT, MPI_SUM, PetscObjectComm((PetscObject)c->dm)));
+  PetscCallMPI(MPI_Allreduce(r, rall, 3, MPIU_REAL, MPI_MAX, PetscObjectComm((PetscObject)c->dm)));
+  c->stats.frozenPoints    = nall[3];
+  c->stats.frozenDeviation = rall[2];
   c->stats.stickPoints   = nall[0];
   c->stats.slipPoints    = nall[1];
   c->stats.statusChanged = compare ? nall[2] : 0;
@@ -607,6 +627,35 @@ PetscBool SPFrictionConverged(SPContact c)
   if (c->stats.statusChanged) return PETSC_FALSE;
   if (c->method->timing != SP_UPDATE_NEWTON) return PETSC_TRUE; /* none, or checked after the solve */
   return c->creepRel <= c->creepRtol && c->stats.maxSlipShiftResidual <= c->slipRtol ? PETSC_TRUE : PETSC_FALSE;
+}
+
+/* At an iterate that passes every other convergence test: a chattering point slipping in its
+   frozen direction (SPFrictionTraction) whose traction is more than slip_rtol mu p from the return
+   map's is no Coulomb state (a point that sticks, or slips another way, at this state), so it gets
+   the return map again and the solve goes on (*released): once per point and load step. A point
+   released before still off is not converged: the solve goes on to its stall test and cut-back. */
+PetscErrorCode SPFrictionReleaseFrozen(SPContact c, PetscBool *released, PetscBool *off)
+{
+  PetscInt n[2] = {0, 0}, all[2];
+
+  PetscFunctionBeginUser;
+  *released = *off = PETSC_FALSE;
+  if (!c->friction || !c->stats.frozenPoints || c->stats.frozenDeviation <= c->slipRtol) PetscFunctionReturn(PETSC_SUCCESS);
+  for (PetscInt i = 0; i < c->n; ++i) {
+    SPContactPoint *pt = &c->pt[i];
+    PetscReal       y[2], t[2];
+    PetscBool       stick;
+    if (pt->st.status != SP_POINT_SLIP || pt->st.flips <= c->maxFlips) continue;
+    SPFrictionTraction(c, i, y, t, &stick);
+    if (FrozenDeviation(c, i, t) <= c->slipRtol) continue;
+    if (pt->st.released) n[1]++;
+    else n[0]++, pt->st.released = PETSC_TRUE, pt->st.flips = 0;
+  }
+  PetscCallMPI(MPI_Allreduce(n, all, 2, MPIU_INT, MPI_SUM, PetscObjectComm((PetscObject)c->dm)));
+  if (all[0]) PetscCall(PetscInfo(c->dm, "friction: %" PetscInt_FMT " chattering points released from their frozen slip direction (traction %g mu p off the return map's)\n", all[0], (double)c->stats.frozenDeviation));
+  *released = all[0] ? PETSC_TRUE : PETSC_FALSE;
+  *off      = all[1] ? PETSC_TRUE : PETSC_FALSE;
+  PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 /* Nodal friction forces: into f (the contact-point force vector, dim per point, global index

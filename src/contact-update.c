@@ -434,6 +434,11 @@ PetscErrorCode SPContactConverged(SPContact c, PetscBool *ok)
   *ok = c->stats.activeChanged == 0 ? PETSC_TRUE : PETSC_FALSE;
   if (c->method->timing == SP_UPDATE_NEWTON && c->stats.gapError > c->gapTol) *ok = PETSC_FALSE;
   if (!SPFrictionConverged(c)) *ok = PETSC_FALSE;
+  if (*ok) { /* a chattering point's frozen slip direction must be the return map's */
+    PetscBool released, off;
+    PetscCall(SPFrictionReleaseFrozen(c, &released, &off));
+    if (released || off) *ok = PETSC_FALSE;
+  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
