@@ -67,16 +67,19 @@ static void AddDirection(PetscInt dim, const PetscReal v[], PetscReal q[][3], Pe
   (*nq)++;
 }
 
-/* Whether the check applies: every support's reaction direction is known before the solve */
-static PetscBool Applies(SPProblem p, SPContact c)
+/* Whether the check applies: every support's reaction direction is known before the solve, or,
+   with friction (*pullOnly), only whether the loads pull the body off its planes */
+static PetscBool Applies(SPProblem p, SPContact c, PetscBool *pullOnly)
 {
+  *pullOnly = PETSC_FALSE;
   if (p->mmsAmp != 0.0) return PETSC_FALSE; /* a body force */
   for (PetscInt i = 0; i < p->nbc; ++i)
     if (p->bc[i].follower) return PETSC_FALSE;
   if (!c || !c->enabled) return PETSC_TRUE;
-  if (c->npair > 0 || c->friction) return PETSC_FALSE;
+  if (c->npair > 0) return PETSC_FALSE;
   for (PetscInt k = 0; k < c->nob; ++k)
     if (c->ob[k].type != SP_OBSTACLE_PLANE) return PETSC_FALSE;
+  *pullOnly = c->friction;
   return PETSC_TRUE;
 }
 
@@ -100,6 +103,28 @@ static void RemoveSpan(PetscInt dim, PetscReal v[3], PetscReal q[][3], PetscInt 
     for (PetscInt d = 0; d < dim; ++d) dot += v[d] * q[k][d];
     for (PetscInt d = 0; d < dim; ++d) v[d] -= dot * q[k][d];
   }
+}
+
+/* With friction a plane's reaction is its push along n plus any tangential force: only the pull
+   along n is refused, where every plane has the same normal n and no Dirichlet direction has a
+   part along n (then n . (every reaction) >= 0). nhat: that unit normal; false if not so. */
+static PetscBool CommonNormal(PetscInt dim, PetscReal n[][3], PetscInt nn, PetscReal q[][3], PetscInt nq, PetscReal nhat[3])
+{
+  PetscReal len = 0.0, w[3];
+
+  if (nn == 0) return PETSC_FALSE;
+  for (PetscInt d = 0; d < dim; ++d) len += n[0][d] * n[0][d];
+  for (PetscInt d = 0; d < 3; ++d) nhat[d] = d < dim ? n[0][d] / PetscSqrtReal(len) : 0.0;
+  for (PetscInt k = 1; k < nn; ++k) {
+    PetscReal dot = 0.0, lk = 0.0;
+    for (PetscInt d = 0; d < dim; ++d) dot += n[k][d] * nhat[d], lk += n[k][d] * n[k][d];
+    if (dot < (1.0 - 1e-12) * PetscSqrtReal(lk)) return PETSC_FALSE;
+  }
+  for (PetscInt d = 0; d < 3; ++d) w[d] = nhat[d];
+  RemoveSpan(dim, w, q, nq);
+  len = 0.0;
+  for (PetscInt d = 0; d < dim; ++d) len += w[d] * w[d];
+  return len >= 1.0 - 1e-12 ? PETSC_TRUE : PETSC_FALSE;
 }
 
 /* x = a^-1 b for m <= 3 (a symmetric positive definite: Gaussian elimination without pivoting) */
@@ -186,10 +211,11 @@ static PetscErrorCode ConditionForces(DM dm, SPProblem p, PetscReal F[])
 
 /* The part of the net force at load factor `load` that no support can hold: outside the span of
    the Dirichlet directions q[nq] and the cone of the planes' pushes n[nn] (both with the span
-   removed); false if negligible */
-static PetscBool Unheld(SPProblem p, const PetscReal F[], PetscReal load, PetscReal q[][3], PetscInt nq, PetscReal n[][3], PetscInt nn, PetscReal perp[3])
+   removed); with friction (pull: the common normal) its pull along that normal. False if
+   negligible. */
+static PetscBool Unheld(SPProblem p, const PetscReal F[], PetscReal load, PetscReal q[][3], PetscInt nq, PetscReal n[][3], PetscInt nn, const PetscReal *pull, PetscReal perp[3])
 {
-  PetscReal scale = 0.0, len = 0.0;
+  PetscReal scale = 0.0, len = 0.0, along = 0.0;
 
   perp[0] = perp[1] = perp[2] = 0.0;
   for (PetscInt i = 0; i < p->nbc; ++i) {
@@ -197,22 +223,30 @@ static PetscBool Unheld(SPProblem p, const PetscReal F[], PetscReal load, PetscR
     for (PetscInt d = 0; d < p->dim; ++d) perp[d] += a * F[4 * i + d];
     scale += a * F[4 * i + 3];
   }
-  RemoveSpan(p->dim, perp, q, nq);
-  RemoveCone(p->dim, perp, n, nn);
+  if (pull) {
+    for (PetscInt d = 0; d < p->dim; ++d) along += perp[d] * pull[d];
+    for (PetscInt d = 0; d < p->dim; ++d) perp[d] = along > 0.0 ? along * pull[d] : 0.0;
+  } else {
+    RemoveSpan(p->dim, perp, q, nq);
+    RemoveCone(p->dim, perp, n, nn);
+  }
   for (PetscInt d = 0; d < p->dim; ++d) len += perp[d] * perp[d];
   return PetscSqrtReal(len) > 1e-8 * scale ? PETSC_TRUE : PETSC_FALSE;
 }
 
-/* Whether the unheld part perp lies along the planes' normals: then the loads pull the body off */
+/* Whether the unheld part perp pulls away from some plane (a part along its normal, which points
+   towards the body): then the loads pull the body off, and friction would not hold it either */
 static PetscBool PullsOff(PetscInt dim, const PetscReal perp[3], PetscReal n[][3], PetscInt nn)
 {
-  PetscReal qn[3][3], w[3] = {perp[0], perp[1], perp[2]}, len = 0.0, len0 = 0.0;
-  PetscInt  nqn = 0;
+  PetscReal lp = 0.0;
 
-  for (PetscInt k = 0; k < nn && nqn < dim; ++k) AddDirection(dim, n[k], qn, &nqn);
-  RemoveSpan(dim, w, qn, nqn);
-  for (PetscInt d = 0; d < dim; ++d) len += w[d] * w[d], len0 += perp[d] * perp[d];
-  return nn > 0 && len <= 1e-12 * len0 ? PETSC_TRUE : PETSC_FALSE;
+  for (PetscInt d = 0; d < dim; ++d) lp += perp[d] * perp[d];
+  for (PetscInt k = 0; k < nn; ++k) {
+    PetscReal dot = 0.0, ln = 0.0;
+    for (PetscInt d = 0; d < dim; ++d) dot += perp[d] * n[k][d], ln += n[k][d] * n[k][d];
+    if (dot > 1e-8 * PetscSqrtReal(lp * ln)) return PETSC_TRUE;
+  }
+  return PETSC_FALSE;
 }
 
 /* Collective, after the contact set-up: one line if the loads cannot be held. The net force is
@@ -221,22 +255,23 @@ PetscErrorCode SPBCCheckBalance(DM dm, SPProblem p, SPContact c)
 {
   MPI_Comm  comm = PetscObjectComm((PetscObject)dm);
   PetscInt  dim  = p->dim, nq;
-  PetscReal F[4 * SP_MAX_BC], q[3][3], n[SP_MAX_OBSTACLES][3], perp[3], load = 1.0;
+  PetscReal F[4 * SP_MAX_BC], q[3][3], n[SP_MAX_OBSTACLES][3], orig[SP_MAX_OBSTACLES][3], perp[3], nhat[3], load = 1.0;
   PetscInt  nn = 0;
-  PetscBool unheld;
+  PetscBool unheld, pullOnly;
   char      fixed[64] = "", force[96];
 
   PetscFunctionBeginUser;
-  if (!Applies(p, c)) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCall(ConditionForces(dm, p, F));
+  if (!Applies(p, c, &pullOnly)) PetscFunctionReturn(PETSC_SUCCESS);
   Reactions(p, q, &nq);
   for (PetscInt k = 0; c && c->enabled && k < c->nob; ++k, ++nn) { /* the planes' pushes, the span removed */
-    for (PetscInt d = 0; d < 3; ++d) n[nn][d] = d < dim ? c->ob[k].normal[d] : 0.0;
+    for (PetscInt d = 0; d < 3; ++d) orig[nn][d] = n[nn][d] = d < dim ? c->ob[k].normal[d] : 0.0;
     RemoveSpan(dim, n[nn], q, nq);
   }
-  unheld = Unheld(p, F, load, q, nq, n, nn, perp);
+  if (pullOnly && !CommonNormal(dim, orig, nn, q, nq, nhat)) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(ConditionForces(dm, p, F));
+  unheld = Unheld(p, F, load, q, nq, n, nn, pullOnly ? nhat : NULL, perp);
   for (PetscInt i = 0; i < p->nbc && !unheld; ++i)
-    for (PetscInt e = 0; e < 2 && !unheld; ++e) load = p->bc[i].ramp[e], unheld = load > 0.0 && Unheld(p, F, load, q, nq, n, nn, perp);
+    for (PetscInt e = 0; e < 2 && !unheld; ++e) load = p->bc[i].ramp[e], unheld = load > 0.0 && Unheld(p, F, load, q, nq, n, nn, pullOnly ? nhat : NULL, perp);
   if (!unheld) PetscFunctionReturn(PETSC_SUCCESS);
   for (PetscInt i = 0; i < p->nbc; ++i)
     for (PetscInt k = 0; p->bc[i].type == SP_BC_DIRICHLET && k < p->bc[i].ncomps; ++k) {
@@ -246,6 +281,6 @@ PetscErrorCode SPBCCheckBalance(DM dm, SPProblem p, SPContact c)
       PetscCall(PetscStrlcat(fixed, name, sizeof(fixed)));
     }
   PetscCall(PetscSNPrintf(force, sizeof(force), dim == 2 ? "(%.4g, %.4g)" : "(%.4g, %.4g, %.4g)", (double)perp[0], (double)perp[1], (double)perp[2]));
-  PetscCheck(!PullsOff(dim, perp, n, nn), comm, PETSC_ERR_USER_INPUT, "the loads' net force at load factor %.6g has a part %s that pulls the body off its obstacles (Dirichlet conditions fix %s; frictionless planes only push, along their normals): no equilibrium exists. Reverse that load, or add a Dirichlet condition in that direction", (double)load, force, fixed[0] ? fixed : "no component");
+  PetscCheck(!PullsOff(dim, perp, n, nn), comm, PETSC_ERR_USER_INPUT, "the loads' net force at load factor %.6g has a part %s that pulls the body off its obstacles (Dirichlet conditions fix %s; a plane only pushes, along its normal%s): no equilibrium exists. Reverse that load, or add a Dirichlet condition in that direction (if the load is right, check that each -contact_obstacle_<k>_normal points towards the body)", (double)load, force, fixed[0] ? fixed : "no component", pullOnly ? ", and its friction does not hold a body pulled off" : "");
   SETERRQ(comm, PETSC_ERR_USER_INPUT, "the loads' net force at load factor %.6g has a part %s that no support can hold (Dirichlet conditions fix %s; %s): no equilibrium exists. %s", (double)load, force, fixed[0] ? fixed : "no component", c && c->enabled ? "the obstacles are frictionless planes, which only push, along their normals" : "there is no contact", c && c->enabled ? "Add friction (-contact_friction_mu), a Dirichlet condition in that direction, or loads that balance" : "Add a Dirichlet condition in that direction, or loads that balance");
 }

@@ -141,7 +141,7 @@ PetscErrorCode SPBCAddToDS(DM dm, PetscInt nbc, SPBC bc[], PetscScalar constants
   for (PetscInt i = 0; i < nbc; ++i) {
     char    opt[32];
     DMLabel label;
-    PetscCall(PetscSNPrintf(opt, sizeof(opt), "-bc_%" PetscInt_FMT "_label", i));
+    PetscCall(PetscSNPrintf(opt, sizeof(opt), "-bc_%" PetscInt_FMT "_values", i));
     PetscCall(SPMeshCheckLabel(dm, bc[i].label, bc[i].nvalues, bc[i].values, opt));
     if (bc[i].type == SP_BC_DIRICHLET) {
       char name[64];

@@ -78,7 +78,8 @@ static int EveryRankFailed(void)
 
 /* PETSc's messages for a value it cannot read name the value, not the option ("Input string abc
    has no numeric value", "Unknown logical value: abc"): the option whose value, or one element of
-   whose comma list, is exactly that string (spaces included) is found in the database and named:
+   whose comma list, is exactly that string (spaces included) is found in the database and named
+   (not one that takes a word, such as a label: never read as a number or true/false):
    "-contact_alpha abc: not a number", "-bc_1_value \"0.0015,0 \": its element \"0 \" is not a
    number (a space inside a value)" */
 static PetscBool OptionHolding(const char bad[], char name[], size_t nname, char whole[], size_t nwhole)
@@ -91,7 +92,12 @@ static PetscBool OptionHolding(const char bad[], char name[], size_t nname, char
     const char *val = NULL;
     PetscBool   set = PETSC_FALSE;
     size_t      len = strlen(bad);
+    char        lower[256];
     if (tok[0] != '-' || !isalpha((unsigned char)tok[1])) continue;
+    for (size_t j = 0; j < sizeof(lower); ++j)
+      if (!(lower[j] = (char)tolower((unsigned char)tok[j]))) break;
+    lower[sizeof(lower) - 1] = 0;
+    if (SPOptionsTakesWord(lower)) continue; /* a label or name holding the same word is not read as a number */
     if (PetscOptionsFindPair(NULL, NULL, tok, &val, &set) || !set || !val) continue;
     for (const char *e = val; e && !name[0]; e = strchr(e, ',') ? strchr(e, ',') + 1 : NULL) /* each element of the list */
       if (!strncmp(e, bad, len) && (e[len] == ',' || e[len] == 0)) (void)snprintf(name, nname, "%s", tok), (void)snprintf(whole, nwhole, "%s", val);

@@ -371,6 +371,8 @@ PetscErrorCode SPMeshCheckLabel(DM dm, const char name[], PetscInt nv, const Pet
     if (label) PetscCall(DMLabelGetStratumSize(label, values[i], &n));
     PetscCallMPI(MPI_Allreduce(&n, &nAll, 1, MPIU_INT, MPI_SUM, comm));
     PetscCheck(nAll > 0, comm, PETSC_ERR_USER_INPUT, "%s: label \"%s\" has no points with value %" PetscInt_FMT " (check the gmsh physical group numbers)", option, name, values[i]);
+    for (PetscInt j = 0; j < i; ++j) /* a repeated value would count its faces twice: a load applied twice */
+      PetscCheck(values[j] != values[i], comm, PETSC_ERR_USER_INPUT, "%s: value %" PetscInt_FMT " is given twice (its faces would carry the condition twice); give each value once", option, values[i]);
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -17,6 +17,7 @@
    PETSc reads them as -2 and -1 and stores them, so "-contact_penalty PETSC_DEFAULT" was refused
    as "-contact_penalty -2" and "-ksp_rtol PETSC_DEFAULT" set rtol -2. */
 #include <ctype.h>
+#include <strings.h>
 #include <spcontact-impl.h>
 
 static const char *const Families[] = {"-contact_", "-solver_", "-load_", "-material_", "-bc_", "-output_", "-mesh_", "-restart", "-max_wall_time", "-debug_"};
@@ -81,22 +82,32 @@ static PetscErrorCode CheckOne(MPI_Comm comm, const char name[], const char rest
 
 static const char *const WordTails[] = {"_type", "_label", "_labels", "_name", "_dir", "_file", "_model", "_law", "_method", "_accel", "_tangent", "_partitioner", "-restart"};
 
-/* Refused if name is a numeric option (as in CheckOne, read or not) and its value (the next token
-   of the string, rest) is one of PETSc's named values */
-static PetscErrorCode CheckNamed(MPI_Comm comm, const char name[], const char rest[])
+/* Whether the option (its name with the dash, lower case) takes a word: a type, label, name, file */
+PetscBool SPOptionsTakesWord(const char name[])
+{
+  return HasTail(name, WordTails, PETSC_STATIC_ARRAY_LENGTH(WordTails)) || !strcmp(name, "-restart") ? PETSC_TRUE : PETSC_FALSE;
+}
+
+/* Refused if name (lower case; shown: as given) is a numeric option (as in CheckOne, read or not)
+   and its value (the next token of the string, rest), or an element of its comma list, is one of
+   PETSc's named values */
+static PetscErrorCode CheckNamed(MPI_Comm comm, const char name[], const char shown[], const char rest[])
 {
   static const char *const named[] = {"petsc_default", "default", "petsc_decide", "decide"};
-  char                     val[32] = "";
-  size_t                   n;
+  const char              *v = rest + 1;
+  const size_t             n = strcspn(v, " ");
 
   PetscFunctionBeginUser;
-  if (!HasValue(rest) || HasTail(name, WordTails, PETSC_STATIC_ARRAY_LENGTH(WordTails)) || !strcmp(name, "-restart")) PetscFunctionReturn(PETSC_SUCCESS);
+  if (!HasValue(rest) || SPOptionsTakesWord(name)) PetscFunctionReturn(PETSC_SUCCESS);
   if (InFamily(name, Families, PETSC_STATIC_ARRAY_LENGTH(Families)) ? IsFlag(name) : !(InFamily(name, PetscFamilies, PETSC_STATIC_ARRAY_LENGTH(PetscFamilies)) && HasTail(name, NumericTails, PETSC_STATIC_ARRAY_LENGTH(NumericTails)))) PetscFunctionReturn(PETSC_SUCCESS);
-  n = strcspn(rest + 1, " ");
-  if (n >= sizeof(val)) PetscFunctionReturn(PETSC_SUCCESS);
-  for (size_t j = 0; j < n; ++j) val[j] = (char)tolower((unsigned char)rest[1 + j]);
-  for (size_t k = 0; k < PETSC_STATIC_ARRAY_LENGTH(named); ++k)
-    PetscCheck(strcmp(val, named[k]), comm, PETSC_ERR_USER_INPUT, "%s %.*s: a named PETSc value is read as the number %d here, not as the default; leave the option out for its default (-help shows it), or give a number", name, (int)n, rest + 1, k < 2 ? (int)PETSC_DEFAULT : (int)PETSC_DECIDE);
+  for (size_t e = 0; e < n;) { /* each element of the comma list */
+    const size_t m = strcspn(v + e, ", ");
+    for (size_t k = 0; k < PETSC_STATIC_ARRAY_LENGTH(named); ++k) {
+      const PetscBool hit = m == strlen(named[k]) && !strncasecmp(v + e, named[k], m) ? PETSC_TRUE : PETSC_FALSE;
+      PetscCheck(!hit, comm, PETSC_ERR_USER_INPUT, "%s %.*s: %s%.*s is a named PETSc value, read as the number %d here, not as a default; leave the option out for its default (-help shows it), or give a number", shown, (int)n, v, m < n ? "its element " : "", (int)m, v + e, k < 2 ? (int)PETSC_DEFAULT : (int)PETSC_DECIDE);
+    }
+    e += m + 1;
+  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -104,7 +115,7 @@ static PetscErrorCode CheckNamed(MPI_Comm comm, const char name[], const char re
 PetscErrorCode SPOptionsCheckNamedValues(MPI_Comm comm)
 {
   char *all;
-  char  name[256];
+  char  name[256], shown[256];
 
   PetscFunctionBeginUser;
   PetscCall(PetscOptionsGetAll(NULL, &all));
@@ -112,8 +123,9 @@ PetscErrorCode SPOptionsCheckNamedValues(MPI_Comm comm)
     size_t n;
     if (!SPOptionsNameAt(all, i, "-") || !isalpha((unsigned char)all[i + 1])) continue;
     n = SPOptionsNameCopy(all, i, name, sizeof(name));
+    (void)PetscStrncpy(shown, name, sizeof(shown));
     for (size_t j = 0; j < n; ++j) name[j] = (char)tolower((unsigned char)name[j]);
-    PetscCall(CheckNamed(comm, name, all + i + n));
+    PetscCall(CheckNamed(comm, name, shown, all + i + n));
     i += n - 1;
   }
   PetscCall(PetscFree(all));

@@ -82,7 +82,7 @@ static PetscErrorCode FindDirectory(SPOutput o, PetscInt *k)
   *k = -1;
   for (PetscInt f = 0; f < NFILES && *k < 0; ++f) {
     PetscCall(PetscSNPrintf(path, sizeof(path), "%s%s.part", o->prefix, Files[f]));
-    if (!stat(path, &st) && S_ISDIR(st.st_mode)) *k = f;
+    if (!lstat(path, &st) && S_ISDIR(st.st_mode)) *k = f; /* a link to a directory is removed as a link */
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }

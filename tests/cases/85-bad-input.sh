@@ -59,10 +59,17 @@ net shear while a load curve holds the balancing pressure back (load factor 0.5)
 suction on B1's top pulls the block off its plane (the sign of a plane's push; was 10 cut-backs)|input/block2d.opts|-bc_1_value -0.01
 3D suction pulls the block off its plane, x and y fixed|input/block3d.opts|-bc_2_value -0.01
 sideways push on a block in a V of two frictionless planes (one plane would have to pull)|input/block2d.opts|-bc_0_type traction -bc_0_value 0,0 -bc_1_type traction -bc_1_value 0.001,0 -contact_obstacle_0_normal 1,1 -contact_obstacle_1_type plane -contact_obstacle_1_point 1,0 -contact_obstacle_1_normal -1,1
+suction on a tilted plane (pull-off advice, not friction)|input/block2d.opts|-bc_1_value -0.01 -bc_0_type traction -bc_0_value 0,0 -contact_obstacle_0_normal 0.1,1
+suction on a block on a plane with friction (friction holds no pull-off; was 13 cut-backs)|input/block2d.opts|-bc_1_value -0.01 -contact_friction_mu 0.3
+plane normal pointing away from the body|input/block2d.opts|-contact_obstacle_0_normal 0,-1
+label value given twice (the load was applied twice)|input/block2d.opts|-bc_1_values 3,3
+contact label value given twice|input/block2d.opts|-contact_values 1,1
 net shear without contact (advice without friction)|input/elastic2d.opts|-bc_1_components 1 -bc_2_value 1,0.5
 PETSC_DEFAULT for a computed default (was refused as -contact_penalty -2)|input/hertz2d.opts|-contact_penalty PETSC_DEFAULT
 DECIDE for spcontact's real (read as -1)|input/hertz2d.opts|-contact_alpha decide
 PETSC_DEFAULT for PETSc's own tolerance (PETSc stores rtol -2)|input/hertz2d.opts|-ksp_rtol PETSC_DEFAULT
+DEFAULT as a list element (was a traction of -2, run to completion)|input/block2d.opts|-bc_2_type traction -bc_2_values 2 -bc_2_value 0,DEFAULT
+DECIDE in the box mesh's faces (was a PETSc error wall)|input/block2d.opts|-dm_plex_box_faces 4,DECIDE
 output name absolute (was put under -output_dir)|input/hertz2d.opts|-output_name /tmp/spcontact-abs/run
 unknown method (typo)|input/hertz2d.opts|-contact_method shifty
 E negative|input/hertz2d.opts|-material_E -1
@@ -343,13 +350,16 @@ test_bad_input_disk_full_np2() {
 # in, and the job hung: 124 after 20 s); the files keep their .part names
 test_bad_input_surface_xmf_np2() {
   local rc=0 code
-  ln -sfn /nonexistent/dir/x "$CASE_DIR/b-surface.xmf.part"
-  RERUN="ln -s /nonexistent/dir/x $CASE_DIR/b-surface.xmf.part; timeout 120 $MPIEXEC -n 2 $SPC -options_file input/block2d.opts -load_steps 2 -output_dir $CASE_DIR -output_name b"
+  # the surface XDMF's .part name a device whose writes fail (/dev/full's node; a symbolic link
+  # there is removed at the open, so it can no longer stand in)
+  rm -f "$CASE_DIR/b-surface.xmf.part" && mknod "$CASE_DIR/b-surface.xmf.part" c 1 7 || { echo "mknod failed"; return 1; }
+  RERUN="mknod $CASE_DIR/b-surface.xmf.part c 1 7; timeout 120 $MPIEXEC -n 2 $SPC -options_file input/block2d.opts -load_steps 2 -output_dir $CASE_DIR -output_name b"
   timeout 120 $MPIEXEC -n 2 $SPC -options_file input/block2d.opts -load_steps 2 -output_dir "$CASE_DIR" -output_name b -quiet >"$CASE_DIR/o.txt" 2>&1; code=$?
   assert_eq "exit code (1: not a hang 124)" "$code" 1 || rc=1
-  assert_eq "error line" "$(grep -c "^spcontact: error: writing $CASE_DIR/b-surface.xmf.part failed: No such file or directory (check -output_dir and -output_name); the files keep their .part names$" "$CASE_DIR/o.txt")" 1 || rc=1
+  assert_eq "error line" "$(grep -c "^spcontact: error: writing $CASE_DIR/b-surface.xmf.part failed: No space left on device (disk full? check the free space and -output_dir); the files keep their .part names$" "$CASE_DIR/o.txt")" 1 || rc=1
   assert_eq "PETSc error lines" "$(grep -c 'PETSC ERROR' "$CASE_DIR/o.txt")" 0 || rc=1
   assert_eq "files, all .part" "$(cd "$CASE_DIR" && ls b.* b_* b-* | tr '\n' ' ')" "b-surface.xmf.part b-xdmf2.xmf.part b.csv.part b.h5.part b.xmf.part b_contact.csv.part " || rc=1
+  rm -f "$CASE_DIR/b-surface.xmf.part"
   return $rc
 }
 
@@ -391,6 +401,9 @@ test_bad_input_value_names_option() {
 -contact_two_pass maybe|-contact_two_pass maybe: not true or false
 -ksp_rtol 1e-3x|-ksp_rtol 1e-3x: not a number
 -contact_obstacle_0_point 0,abc|-contact_obstacle_0_point "0,abc": its element "abc" is not a number
+-bc_0_label top -contact_two_pass top|-contact_two_pass top: not true or false
+-contact_obstacle_0_point 0,DEFAULT|-contact_obstacle_0_point 0,DEFAULT: its element DEFAULT is a named PETSc value, read as the number -2 here, not as a default; leave the option out for its default (-help shows it), or give a number
+-material_E Decide|-material_E Decide: Decide is a named PETSc value, read as the number -1 here, not as a default; leave the option out for its default (-help shows it), or give a number
 CASES
   # a space inside a quoted value: the option holding it is named, not another with the value 0
   printf -- '-material_nu 0\n-contact_obstacle_0_point "0,0 "\n' >"$CASE_DIR/space.opts"
