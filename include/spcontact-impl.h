@@ -355,6 +355,7 @@ PETSC_EXTERN PetscErrorCode SPContactPointsSetUp(SPContact, DMLabel);
 PETSC_EXTERN PetscErrorCode SPContactPointsDestroy(SPContact);
 PETSC_EXTERN PetscErrorCode SPContactEvaluate(SPContact, Vec);
 PETSC_EXTERN PetscErrorCode SPContactSearch(SPContact, const PetscScalar[], PetscReal);
+PETSC_EXTERN PetscErrorCode SPContactWarnCorners(SPContact);
 PETSC_EXTERN PetscErrorCode SPContactPointElement(SPContact, PetscInt, PetscInt *, PetscInt[], PetscReal *, PetscReal[], PetscReal[]);
 PETSC_EXTERN void           SPContactPointTraction(SPContact, PetscInt, PetscReal *, PetscReal *);
 PETSC_EXTERN PetscBool      SPContactPointActive(SPContact, PetscInt);

@@ -52,3 +52,33 @@ PetscErrorCode SPContactSearch(SPContact c, const PetscScalar u[], PetscReal loa
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
+
+/* Collective, at the set-up: a warning where a slave vertex touches two rigid obstacles at the
+   start (a block's corner on a floor and against a wall). A point holds one obstacle at a time, the
+   most penetrating, so such a corner switches between them from one Newton iterate to the next and
+   the solve can cycle (the active-set stall, then cut-backs). Touching: a gap within 1e-6 of the
+   point's facet size (a relative test). */
+PetscErrorCode SPContactWarnCorners(SPContact c)
+{
+  MPI_Comm comm = PetscObjectComm((PetscObject)c->dm);
+  PetscInt n[2] = {0, -1}, all[2];
+
+  PetscFunctionBeginUser;
+  if (!c->enabled || c->nob < 2) PetscFunctionReturn(PETSC_SUCCESS);
+  for (PetscInt i = 0; i < c->n; ++i) {
+    PetscInt touch = 0, first = -1;
+    if (!c->pt[i].onObstacle) continue;
+    for (PetscInt j = 0; j < c->nob; ++j) {
+      PetscReal gj, nj[3], Hj[9];
+      SPObstacleGap(&c->ob[j], c->dim, 0.0, c->pt[i].X, &gj, nj, Hj);
+      if (gj > 1e-6 * c->pt[i].h) continue;
+      if (++touch == 2) n[0]++, n[1] = PetscMax(n[1], first * SP_MAX_OBSTACLES + j);
+      first = first < 0 ? j : first;
+    }
+  }
+  all[0] = n[0];
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, all, 1, MPIU_INT, MPI_SUM, comm));
+  PetscCallMPI(MPI_Allreduce(&n[1], &all[1], 1, MPIU_INT, MPI_MAX, comm));
+  if (all[0]) PetscCall(PetscFPrintf(comm, PETSC_STDERR, "spcontact: warning: %" PetscInt_FMT " contact point(s) touch two obstacles at the start (e.g. obstacles %" PetscInt_FMT " and %" PetscInt_FMT "); a point holds one obstacle at a time, so the solve can cycle between them (README, Known limits): set the obstacles a small gap apart, or round the corner\n", all[0], all[1] / SP_MAX_OBSTACLES, all[1] % SP_MAX_OBSTACLES));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}

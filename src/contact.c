@@ -314,6 +314,7 @@ PetscErrorCode SPContactSetUp(SPContact c)
   PetscCall(SPContactPointsSetUp(c, slave));
   PetscCall(SPContactComputeAreas(c));
   PetscCall(SPContactSetGapTolerance(c));
+  PetscCall(SPContactWarnCorners(c));
   PetscCall(DMCreateGlobalVector(c->dm, &c->Fc));
   PetscCall(VecCreateMPI(comm, c->n * c->dim, PETSC_DETERMINE, &c->fvec));
   PetscCall(VecSetOption(c->fvec, VEC_IGNORE_NEGATIVE_INDICES, PETSC_TRUE));
