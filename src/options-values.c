@@ -67,7 +67,7 @@ static PetscBool HasValue(const char rest[])
    unused-option report names it. PETSc's numeric ones whether read or not (GAMG's level options
    are read at the first solve, after this check), from the string alone, so that one not read
    stays in the unused-option report */
-static PetscErrorCode CheckOne(MPI_Comm comm, const char name[], const char rest[])
+static PetscErrorCode CheckOne(MPI_Comm comm, const char name[], const char shown[], const char rest[])
 {
   PetscBool check;
 
@@ -76,7 +76,7 @@ static PetscErrorCode CheckOne(MPI_Comm comm, const char name[], const char rest
     check = IsFlag(name) ? PETSC_FALSE : PETSC_TRUE;
     if (check) PetscCall(PetscOptionsUsed(NULL, name + 1, &check)); /* the database keeps names without the dash */
   } else check = InFamily(name, PetscFamilies, PETSC_STATIC_ARRAY_LENGTH(PetscFamilies)) && HasTail(name, NumericTails, PETSC_STATIC_ARRAY_LENGTH(NumericTails)) ? PETSC_TRUE : PETSC_FALSE;
-  PetscCheck(!check || HasValue(rest), comm, PETSC_ERR_USER_INPUT, "%s needs a value (-help gives its meaning and default)", name);
+  PetscCheck(!check || HasValue(rest), comm, PETSC_ERR_USER_INPUT, "%s needs a value (-help gives its meaning and default)", shown);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -111,8 +111,9 @@ static PetscErrorCode CheckNamed(MPI_Comm comm, const char name[], const char sh
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Collective, before the set-up reads any option: PETSc's named values in numeric options */
-PetscErrorCode SPOptionsCheckNamedValues(MPI_Comm comm)
+/* Every option name of the database, lower case (PETSc's names ignore case) and as given, with the
+   string after it, to check(); collective */
+static PetscErrorCode ForEachOption(MPI_Comm comm, PetscErrorCode (*check)(MPI_Comm, const char[], const char[], const char[]))
 {
   char *all;
   char  name[256], shown[256];
@@ -125,28 +126,24 @@ PetscErrorCode SPOptionsCheckNamedValues(MPI_Comm comm)
     n = SPOptionsNameCopy(all, i, name, sizeof(name));
     (void)PetscStrncpy(shown, name, sizeof(shown));
     for (size_t j = 0; j < n; ++j) name[j] = (char)tolower((unsigned char)name[j]);
-    PetscCall(CheckNamed(comm, name, shown, all + i + n));
+    PetscCall(check(comm, name, shown, all + i + n));
     i += n - 1;
   }
   PetscCall(PetscFree(all));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Collective, before the set-up reads any option: PETSc's named values in numeric options */
+PetscErrorCode SPOptionsCheckNamedValues(MPI_Comm comm)
+{
+  PetscFunctionBeginUser;
+  PetscCall(ForEachOption(comm, CheckNamed));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode SPOptionsCheckValues(MPI_Comm comm)
 {
-  char *all;
-  char  name[256];
-
   PetscFunctionBeginUser;
-  PetscCall(PetscOptionsGetAll(NULL, &all));
-  for (size_t i = 0; all[i]; ++i) {
-    size_t n;
-    if (!SPOptionsNameAt(all, i, "-") || !isalpha((unsigned char)all[i + 1])) continue;
-    n = SPOptionsNameCopy(all, i, name, sizeof(name));
-    for (size_t j = 0; j < n; ++j) name[j] = (char)tolower((unsigned char)name[j]); /* PETSc's names ignore case */
-    PetscCall(CheckOne(comm, name, all + i + n));
-    i += n - 1;
-  }
-  PetscCall(PetscFree(all));
+  PetscCall(ForEachOption(comm, CheckOne));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
