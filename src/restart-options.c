@@ -4,7 +4,8 @@
    (attribute physics_options of /restart) and compared on restart: a changed friction coefficient,
    obstacle point or load would otherwise continue a run whose converged steps solved another
    problem. Solver options, output options and -load_steps may change. The values are read from
-   PetscOptionsGetAll's string, which does not mark an option used (the unused-option report). */
+   PetscOptionsGetAll's string, which does not mark an option used (the unused-option report);
+   options the run does not use (a plane's radius, put back as unread) are left out on both sides. */
 #include <spcontact-impl.h>
 #include <ctype.h>
 #include <stdlib.h>
@@ -40,6 +41,7 @@ PetscErrorCode SPRestartPhysicsOptions(SPApp a, char **str)
   const PetscBool penalty = a->contact->enabled && a->contact->method->timing == SP_UPDATE_NONE;
   char           *all, **tok, **line;
   size_t          ntok = 0, nline = 0, len = 1;
+  PetscBool       used;
 
   PetscFunctionBeginUser;
   PetscCall(PetscOptionsGetAll(NULL, &all));
@@ -49,6 +51,8 @@ PetscErrorCode SPRestartPhysicsOptions(SPApp a, char **str)
     size_t n = strlen(tok[k]) + 2, j;
     if (!IsName(tok[k]) || Matches(tok[k], Solver, PETSC_STATIC_ARRAY_LENGTH(Solver))) continue;
     if (!Matches(tok[k], Physics, PETSC_STATIC_ARRAY_LENGTH(Physics)) && !(penalty && Matches(tok[k], Penalty, PETSC_STATIC_ARRAY_LENGTH(Penalty)))) continue;
+    PetscCall(PetscOptionsUsed(NULL, tok[k] + 1, &used));
+    if (!used) continue; /* not this run's (a plane's radius): the unused-option report names it */
     for (j = k + 1; j < ntok && !IsName(tok[j]); ++j) n += strlen(tok[j]) + 1; /* a value with spaces ("0.1, 0") is several tokens */
     PetscCall(PetscMalloc1(n, &line[nline]));
     PetscCall(PetscStrncpy(line[nline], tok[k], n));

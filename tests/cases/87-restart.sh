@@ -221,6 +221,10 @@ EOF
   # solution does not depend on it (shifted)
   spc "$CASE_DIR/r.txt" 1 -options_file input/friction_block2d.opts -contact_friction_mu 3e-1 -material_nu 0.0 -bc_1_value "0.0015, 0" -contact_alpha 100 -ksp_rtol 1e-9 -output_dir "$CASE_DIR" -output_name r -restart "$CASE_DIR/f.h5.part" || rc=1
   assert_eq "restart with mu 3e-1 for 0.3, nu 0.0 for 0, a value with a space, another alpha and ksp_rtol: status" "$(sval "$CASE_DIR/r.txt" status)" complete || rc=1
+  # an option the run does not use (a plane's radius) is not compared: reported unused instead
+  spc "$CASE_DIR/r3.txt" 1 -options_file input/friction_block2d.opts -contact_obstacle_0_radius 2 -output_dir "$CASE_DIR" -output_name r3 -restart "$CASE_DIR/f.h5.part" || rc=1
+  assert_eq "restart with a plane's radius added: status" "$(sval "$CASE_DIR/r3.txt" status)" complete || rc=1
+  assert_eq "the radius reported unused" "$(grep -c '^spcontact: warning: option -contact_obstacle_0_radius was not used' "$CASE_DIR/r3.txt")" 1 || rc=1
   # a value with a space is compared whole (QA helper 25: only its first word was)
   spc "$CASE_DIR/r2.txt" 1 -options_file input/friction_block2d.opts -bc_1_value "0.0015, 0.001" -output_dir "$CASE_DIR" -output_name r2 -restart "$CASE_DIR/f.h5.part"
   assert_eq "restart with a changed second word of a value: refused" "$(grep -c '^spcontact: error: -restart .*-bc_1_value is 0.0015,0 there and 0.0015, 0.001 here' "$CASE_DIR/r2.txt")" 1 || rc=1
