@@ -244,6 +244,8 @@ typedef struct {
   PetscReal       epsT;            /* tangential penalty alpha_T E / h */
   PetscReal       t[2];            /* tangential traction of the last evaluated state (basis T) */
   PetscBool       stick;           /* its return-map status */
+  PetscReal       frozenDev;       /* friction, slipping in a frozen direction: its FrozenDeviation at
+                                      the last bookkeeping (0 otherwise) */
   SPPointPrev     prev;            /* the converged step before the last (the stuck points' predictor) */
   PetscInt        keepFacet;       /* pairs: master facet gid of the last Newton iterate in this step
                                       (-1: none), kept while it stays a near-best candidate */

@@ -589,6 +589,7 @@ PetscErrorCode SPFrictionBookkeep(SPContact c, PetscBool compare)
       if (st != SP_POINT_OPEN && pt->st.status != SP_POINT_OPEN) pt->st.flips++;
     }
     pt->st.reversed = PETSC_FALSE;
+    pt->frozenDev   = 0.0;
     if (st == SP_POINT_SLIP) { /* a reversal of the slip direction is a status change too */
       const PetscReal nt_ = SPNorm(dim - 1, t);
       PetscReal       m[2] = {0, 0};
@@ -596,7 +597,7 @@ PetscErrorCode SPFrictionBookkeep(SPContact c, PetscBool compare)
       pt->st.reversed = compare && pt->st.status == SP_POINT_SLIP && SPDot(dim - 1, m, pt->st.dir) < 0.0 ? PETSC_TRUE : PETSC_FALSE;
       if (pt->st.reversed) n[2]++;
       pt->st.dir[0] = m[0], pt->st.dir[1] = m[1];
-      if (pt->st.flips > c->maxFlips) n[3]++, r[2] = PetscMax(r[2], FrozenDeviation(c, i, t));
+      if (pt->st.flips > c->maxFlips) n[3]++, pt->frozenDev = FrozenDeviation(c, i, t), r[2] = PetscMax(r[2], pt->frozenDev);
     }
     pt->st.status = st;
     if (pt->geo.mu <= 0.0 || st == SP_POINT_OPEN) continue;
@@ -643,11 +644,7 @@ PetscErrorCode SPFrictionReleaseFrozen(SPContact c, PetscBool *released, PetscBo
   if (!c->friction || !c->stats.frozenPoints || c->stats.frozenDeviation <= c->slipRtol) PetscFunctionReturn(PETSC_SUCCESS);
   for (PetscInt i = 0; i < c->n; ++i) {
     SPContactPoint *pt = &c->pt[i];
-    PetscReal       y[2], t[2];
-    PetscBool       stick;
-    if (pt->st.status != SP_POINT_SLIP || pt->st.flips <= c->maxFlips) continue;
-    SPFrictionTraction(c, i, y, t, &stick);
-    if (FrozenDeviation(c, i, t) <= c->slipRtol) continue;
+    if (pt->frozenDev <= c->slipRtol) continue; /* SPFrictionBookkeep's, at this iterate */
     if (pt->st.released) n[1]++;
     else n[0]++, pt->st.released = PETSC_TRUE, pt->st.flips = 0;
   }

@@ -92,12 +92,8 @@ static PetscBool OptionHolding(const char bad[], char name[], size_t nname, char
     const char *val = NULL;
     PetscBool   set = PETSC_FALSE;
     size_t      len = strlen(bad);
-    char        lower[256];
     if (tok[0] != '-' || !isalpha((unsigned char)tok[1])) continue;
-    for (size_t j = 0; j < sizeof(lower); ++j)
-      if (!(lower[j] = (char)tolower((unsigned char)tok[j]))) break;
-    lower[sizeof(lower) - 1] = 0;
-    if (SPOptionsTakesWord(lower)) continue; /* a label or name holding the same word is not read as a number */
+    if (SPOptionsTakesWord(tok)) continue; /* a label or name holding the same word is not read as a number */
     if (PetscOptionsFindPair(NULL, NULL, tok, &val, &set) || !set || !val) continue;
     for (const char *e = val; e && !name[0]; e = strchr(e, ',') ? strchr(e, ',') + 1 : NULL) /* each element of the list */
       if (!strncmp(e, bad, len) && (e[len] == ',' || e[len] == 0)) (void)snprintf(name, nname, "%s", tok), (void)snprintf(whole, nwhole, "%s", val);

@@ -35,7 +35,7 @@ static PetscBool HasTail(const char name[], const char *const tails[], size_t n)
 
   for (size_t k = 0; k < n; ++k) {
     const size_t m = strlen(tails[k]);
-    if (len > m && !strcmp(name + len - m, tails[k])) return PETSC_TRUE;
+    if (len > m && !strcasecmp(name + len - m, tails[k])) return PETSC_TRUE; /* PETSc's names ignore case */
   }
   return PETSC_FALSE;
 }
@@ -82,10 +82,10 @@ static PetscErrorCode CheckOne(MPI_Comm comm, const char name[], const char show
 
 static const char *const WordTails[] = {"_type", "_label", "_labels", "_name", "_dir", "_file", "_model", "_law", "_method", "_accel", "_tangent", "_partitioner", "-restart"};
 
-/* Whether the option (its name with the dash, lower case) takes a word: a type, label, name, file */
+/* Whether the option (its name with the dash, in any case) takes a word: a type, label, name, file */
 PetscBool SPOptionsTakesWord(const char name[])
 {
-  return HasTail(name, WordTails, PETSC_STATIC_ARRAY_LENGTH(WordTails)) || !strcmp(name, "-restart") ? PETSC_TRUE : PETSC_FALSE;
+  return HasTail(name, WordTails, PETSC_STATIC_ARRAY_LENGTH(WordTails)) || !strcasecmp(name, "-restart") ? PETSC_TRUE : PETSC_FALSE;
 }
 
 /* Refused if name (lower case; shown: as given) is a numeric option (as in CheckOne, read or not)
