@@ -211,6 +211,9 @@ typedef struct {
   PetscBool     released;      /* its frozen direction was let go once in this step (SPFrictionReleaseFrozen) */
   PetscInt      flipsN;        /* open/closed changes in this Newton solve (SPContactChatterHeld) */
   PetscBool     holdOff;       /* the chatter hold let it go in this solve: held at the shift's clip (s = 0) with an open gap */
+  PetscInt      obstacle;      /* the rigid obstacle it held when last active in this solve (-1: none) */
+  PetscInt      otherObstacle; /* the one it held before its last switch (-1: none) */
+  PetscInt      switchesN;     /* switches between obstacles in this Newton solve (SPContactObstacleCycle) */
   PetscReal     dir[2];        /* slip direction at the last bookkeeping (basis T) */
   PetscBool     reversed;      /* the slip direction reversed at the last bookkeeping */
   /* friction anchor, committed at the last converged step (kept through a cut-back) */

@@ -99,6 +99,7 @@ PETSC_EXTERN PetscErrorCode SPContactConverged(SPContact, PetscBool *);
 PETSC_EXTERN PetscErrorCode SPContactGetStats(SPContact, SPContactStats *);
 PETSC_EXTERN PetscErrorCode SPContactGetIterationStats(SPContact, SPContactStats *);
 PETSC_EXTERN PetscErrorCode SPContactHasFriction(SPContact, PetscBool *);
+PETSC_EXTERN PetscErrorCode SPContactObstacleCycle(SPContact, PetscInt *, PetscInt[2]);
 PETSC_EXTERN PetscErrorCode SPContactHasPairs(SPContact, PetscBool *);
 PETSC_EXTERN PetscErrorCode SPContactShiftsInNewton(SPContact, PetscBool *);
 PETSC_EXTERN PetscErrorCode SPContactUpdatesShifts(SPContact, PetscBool *);

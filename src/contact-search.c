@@ -79,6 +79,31 @@ PetscErrorCode SPContactWarnCorners(SPContact c)
   all[0] = n[0];
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, all, 1, MPIU_INT, MPI_SUM, comm));
   PetscCallMPI(MPI_Allreduce(&n[1], &all[1], 1, MPIU_INT, MPI_MAX, comm));
-  if (all[0]) PetscCall(PetscFPrintf(comm, PETSC_STDERR, "spcontact: warning: %" PetscInt_FMT " contact point(s) touch two obstacles at the start (e.g. obstacles %" PetscInt_FMT " and %" PetscInt_FMT "); a point holds one obstacle at a time, so the solve can cycle between them (README, Known limits): set the obstacles a small gap apart, or round the corner\n", all[0], all[1] / SP_MAX_OBSTACLES, all[1] % SP_MAX_OBSTACLES));
+  if (all[0]) PetscCall(PetscFPrintf(comm, PETSC_STDERR, "spcontact: warning: %" PetscInt_FMT " contact point(s) touch two obstacles at the start (e.g. obstacles %" PetscInt_FMT " and %" PetscInt_FMT "); a point holds one obstacle at a time, so the solve can cycle between them (README, Known limits): round or chamfer the corner, or give one of the two a Dirichlet condition instead of an obstacle where the body stays on it\n", all[0], all[1] / SP_MAX_OBSTACLES, all[1] % SP_MAX_OBSTACLES));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Collective: the points that switched between two rigid obstacles at least twice in this Newton
+   solve (*n; pair: two such obstacles), the cause of an active-set cycle at a corner that reached
+   a second obstacle during the run (SPContactWarnCorners sees only those touching at the start) */
+PetscErrorCode SPContactObstacleCycle(SPContact c, PetscInt *n, PetscInt pair[2])
+{
+  MPI_Comm comm = PetscObjectComm((PetscObject)c->dm);
+  PetscInt m[2] = {0, -1}, all[2];
+
+  PetscFunctionBeginUser;
+  *n      = 0;
+  pair[0] = pair[1] = -1;
+  if (!c->enabled || c->nob < 2) PetscFunctionReturn(PETSC_SUCCESS);
+  for (PetscInt i = 0; i < c->n; ++i)
+    if (c->pt[i].st.switchesN >= 2) {
+      const PetscInt a = c->pt[i].st.obstacle, b = c->pt[i].st.otherObstacle;
+      m[0]++;
+      m[1] = PetscMax(m[1], PetscMin(a, b) * SP_MAX_OBSTACLES + PetscMax(a, b));
+    }
+  PetscCallMPI(MPI_Allreduce(&m[0], &all[0], 1, MPIU_INT, MPI_SUM, comm));
+  PetscCallMPI(MPI_Allreduce(&m[1], &all[1], 1, MPIU_INT, MPI_MAX, comm));
+  *n = all[0];
+  if (*n) pair[0] = all[1] / SP_MAX_OBSTACLES, pair[1] = all[1] % SP_MAX_OBSTACLES;
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -47,6 +47,10 @@ static PetscErrorCode Bookkeep(SPContact c, PetscReal maxDs, PetscBool compare)
     if (compare) n[1] += active != st->active;
     n[2] += active != st->active;
     if (compare && active != st->active) st->flipsN++;
+    if (active && c->pt[i].geo.elem == SP_ELEM_OBSTACLE) { /* a corner switching between two obstacles */
+      if (compare && st->obstacle >= 0 && st->obstacle != c->pt[i].geo.obstacle) st->switchesN++, st->otherObstacle = st->obstacle;
+      st->obstacle = c->pt[i].geo.obstacle;
+    }
     if (compare && active && SPContactChatterHeld(c, i) && !(c->holding && st->held) && g + st->sN > 0.0) n[3]++;
     st->active = active;
     r[0]       = PetscMax(r[0], -g);
@@ -77,7 +81,11 @@ PetscErrorCode SPContactBeginSolve(SPContact c, Vec X)
   PetscFunctionBeginUser;
   c->holding  = c->holdNext;
   c->holdNext = PETSC_FALSE;
-  for (PetscInt i = 0; i < c->n; ++i) c->nhist[i] = 0, c->pt[i].st.flipsN = 0, c->pt[i].st.holdOff = PETSC_FALSE; /* before the bookkeeping: no chatter hold from the last solve */
+  for (PetscInt i = 0; i < c->n; ++i) { /* before the bookkeeping: no chatter hold or obstacle switch from the last solve */
+    SPPointState *st = &c->pt[i].st;
+    c->nhist[i] = 0, st->flipsN = st->switchesN = 0, st->holdOff = PETSC_FALSE;
+    st->obstacle = st->otherObstacle = -1;
+  }
   PetscCall(SPContactEvaluate(c, X));
   PetscCall(SPFrictionAnchor(c, PETSC_FALSE));
   PetscCall(SPContactPredictApply(c));

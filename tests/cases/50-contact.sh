@@ -487,7 +487,8 @@ test_contact_alm_budget_spent() {
 # A slave vertex touching two rigid obstacles at the start (B1's block with its left face a slave
 # too, against a wall x = 0: the corner (0, 0) touches floor and wall) gets one warning before the
 # solve, with the count of such points (1: the corner, counted once on 1 and 3 ranks); the shipped
-# inputs give none (a point holds one obstacle at a time: README, Known limits)
+# inputs give none (a point holds one obstacle at a time: README, Known limits). A corner that
+# reaches a second obstacle only during the run is named by the stall message instead.
 test_contact_corner_two_obstacles_warning() {
   local rc=0 np
   for np in 1 3; do
@@ -496,5 +497,14 @@ test_contact_corner_two_obstacles_warning() {
   done
   spc "$CASE_DIR/apart.txt" 1 -options_file input/block2d.opts -dm_plex_box_faces 4,4 -contact_obstacle_1_type plane -contact_obstacle_1_point -0.001,0 -contact_obstacle_1_normal 1,0 -output_dir "$CASE_DIR" -output_name apart || rc=1
   assert_eq "no warning with the wall a small gap away" "$(grep -c 'touch two obstacles' "$CASE_DIR/apart.txt")" 0 || rc=1
+  # a corner that reaches the second obstacle during the run: B1 held in x on its right face, its
+  # left face 0.001 from a wall; the top pressure's lateral expansion closes that gap after load
+  # 0.25, and the corner (0, 0) then switches between floor and wall: the stall names it
+  for np in 1 3; do
+    spc "$CASE_DIR/run$np.txt" $np -options_file input/block2d.opts -dm_plex_box_faces 4,4 -bc_0_values 2 -contact_values 1,4 -contact_obstacle_1_type plane -contact_obstacle_1_point -0.001,0 -contact_obstacle_1_normal 1,0 -load_steps 4 -load_min_increment 0.1 -output_dir "$CASE_DIR" -output_name run$np
+    assert_eq "no warning at the start on $np rank(s)" "$(grep -c 'touch two obstacles' "$CASE_DIR/run$np.txt")" 0 || rc=1
+    assert_eq "load 0.25 converged on $np rank(s)" "$(grep -c '^stopping: load factor 0.375 not reached: .*; last converged load factor 0.25$' "$CASE_DIR/run$np.txt")" 1 || rc=1
+    assert_ge "stalls naming the corner on $np rank(s)" "$(grep -c '^solve stalled: .*(an active-set cycle): 1 contact point(s) switched between two obstacles (e.g. obstacles 0 and 1); a point holds one obstacle at a time' "$CASE_DIR/run$np.txt")" 2 || rc=1
+  done
   return $rc
 }
