@@ -239,6 +239,8 @@ typedef struct {
   PetscBool       onObstacle;      /* slave of the rigid obstacles */
   PetscBool       primary;         /* counts in the slave force (obstacle slave or user pair slave) */
   PetscReal       X[3], area, h, eps; /* reference position, tributary area, facet size, penalty */
+  PetscReal       nIn[3];          /* unit normal of its own surface into its body (reference): the
+                                      normal of the force it receives with no contact element (SPContactPointNormal) */
   PetscReal       gap0;            /* gap at the first evaluation (u = 0): locates the contact centre */
   SPPointGeometry geo;
   SPPointState    st;
@@ -319,6 +321,9 @@ struct _n_SPContact {
   Vec             evalX;       /* copy of the displacement of the last evaluation (NULL: none yet) */
   PetscReal       evalLoad;    /* its load factor */
   PetscInt        evaluations; /* evaluations done (requests for an unchanged state cost nothing) */
+  PetscInt        pinnedCount, pinnedPoint, pinnedObstacle; /* this search: points that penetrate an obstacle
+                                  they cannot move against (a Dirichlet condition along its normal), one of them */
+  PetscBool       pinnedWarned; /* that was reported once in this run */
   PetscInt        stepLimits;  /* Newton steps scaled by the step control (their trial iterate is evaluated too) */
   PetscReal       alphaMax;      /* the largest eps h / E at a contact point (the effective alpha) */
   PetscInt        activeVersion; /* moves when the active set (with friction: the stick/slip state) may have changed */
@@ -361,6 +366,8 @@ PETSC_EXTERN PetscErrorCode SPContactPointsDestroy(SPContact);
 PETSC_EXTERN PetscErrorCode SPContactEvaluate(SPContact, Vec);
 PETSC_EXTERN PetscErrorCode SPContactSearch(SPContact, const PetscScalar[], PetscReal);
 PETSC_EXTERN PetscErrorCode SPContactWarnCorners(SPContact);
+PETSC_EXTERN PetscErrorCode SPContactWarnPinned(SPContact);
+PETSC_EXTERN const PetscReal *SPContactPointNormal(SPContact, PetscInt);
 PETSC_EXTERN PetscErrorCode SPContactPointElement(SPContact, PetscInt, PetscInt *, PetscInt[], PetscReal *, PetscReal[], PetscReal[]);
 PETSC_EXTERN void           SPContactPointTraction(SPContact, PetscInt, PetscReal *, PetscReal *);
 PETSC_EXTERN PetscBool      SPContactPointActive(SPContact, PetscInt);
@@ -581,6 +588,7 @@ struct _n_SPApp {
   SPProgress progress; /* the progress lines; progress.t0: the run's start */
   SPSignals signals;
   int       interrupted;   /* the signal that stopped the run (0: none) */
+  PetscBool wallStopped;   /* -max_wall_time stopped the run (status "stopped": restartable, not failed) */
   char      restartFile[PETSC_MAX_PATH_LEN]; /* -restart: resume from this h5 ("" : from the start) */
   PetscReal loadInc;       /* restart: the load increment to go on with (0: 1/loadSteps) */
 };

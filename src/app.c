@@ -130,6 +130,7 @@ PetscErrorCode SPAppSetUp(SPApp a)
 static const char *RunStatus(SPApp a)
 {
   if (a->interrupted) return "interrupted";
+  if (a->wallStopped) return "stopped";
   return a->converged ? "complete" : "failed";
 }
 

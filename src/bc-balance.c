@@ -6,25 +6,10 @@
    shear on a block on a frictionless plane with no condition fixing that direction) has no
    equilibrium: the solve would stall and cut back to -load_min_increment without saying why.
    A plane only pushes: its reaction is a non-negative multiple of its normal, so a load pulling
-   the body off its planes (a suction on B1's top) is refused too. A necessary condition only:
+   the body off its planes (a suction on B1's top) is refused too, and so is a body that nothing
+   holds against a rigid translation, whatever the loads. A necessary condition only: rotations,
    moments and where the supports sit are not checked. */
 #include <spcontact-impl.h>
-
-/* Outward unit normal, centroid and measure of a boundary facet (outward: away from its cell) */
-static PetscErrorCode FacetGeometry(DM dm, PetscInt dim, PetscInt f, PetscReal n[3], PetscReal x[3], PetscReal *area)
-{
-  const PetscInt *supp;
-  PetscReal       xc[3] = {0, 0, 0}, vol, len = 0.0, side = 0.0;
-
-  PetscFunctionBeginUser;
-  PetscCall(DMPlexComputeCellGeometryFVM(dm, f, area, x, n));
-  PetscCall(DMPlexGetSupport(dm, f, &supp));
-  PetscCall(DMPlexComputeCellGeometryFVM(dm, supp[0], &vol, xc, NULL));
-  for (PetscInt d = 0; d < dim; ++d) len += n[d] * n[d], side += n[d] * (x[d] - xc[d]);
-  len = PetscSqrtReal(len) * (side < 0.0 ? -1.0 : 1.0);
-  for (PetscInt d = 0; d < dim; ++d) n[d] /= len;
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
 
 /* This rank's part of the net force of Neumann condition bc at full amplitude, and of its scale
    (the sum of the facets' force magnitudes) */
@@ -37,7 +22,7 @@ static PetscErrorCode AddNetForce(DM dm, PetscInt dim, const SPBC *bc, PetscReal
   PetscCall(SPMeshGetLabelFacets(dm, bc->label, bc->nvalues, bc->values, &n, &facets));
   for (PetscInt k = 0; k < n; ++k) {
     PetscReal nf[3] = {0, 0, 0}, x[3] = {0, 0, 0}, area, p = bc->value[0];
-    PetscCall(FacetGeometry(dm, dim, facets[k], nf, x, &area));
+    PetscCall(SPMeshFacetGeometry(dm, dim, facets[k], nf, x, &area));
     measure += area;
     if (bc->type != SP_BC_PRESSURE) continue;
     for (PetscInt d = 0; d < dim; ++d) p += bc->gradient[d] * x[d];
@@ -249,13 +234,57 @@ static PetscBool PullsOff(PetscInt dim, const PetscReal perp[3], PetscReal n[][3
   return PETSC_FALSE;
 }
 
+/* A rigid translation v that neither a Dirichlet component (q[nq]) nor a plane's normal (n[nn])
+   has a part along: the stiffness is singular whatever the loads (a block on a frictionless floor
+   with nothing fixing x), and the solver returns one of infinitely many answers, different on
+   different rank counts. v: the unit axis direction least held. */
+static PetscBool FreeTranslation(PetscInt dim, PetscReal q[][3], PetscInt nq, PetscReal n[][3], PetscInt nn, PetscReal v[3])
+{
+  PetscReal b[3][3], best = 0.0;
+  PetscInt  nb = 0;
+
+  for (PetscInt k = 0; k < nq; ++k) AddDirection(dim, q[k], b, &nb);
+  for (PetscInt k = 0; k < nn && nb < dim; ++k) AddDirection(dim, n[k], b, &nb);
+  if (nb == dim) return PETSC_FALSE;
+  for (PetscInt a = 0; a < dim; ++a) {
+    PetscReal e[3] = {0, 0, 0}, len = 0.0;
+    e[a] = 1.0;
+    RemoveSpan(dim, e, b, nb);
+    for (PetscInt d = 0; d < dim; ++d) len += e[d] * e[d];
+    if (len <= best) continue;
+    best = len;
+    for (PetscInt d = 0; d < 3; ++d) v[d] = d < dim ? e[d] / PetscSqrtReal(len) : 0.0;
+  }
+  return PETSC_TRUE;
+}
+
+/* Dirichlet-fixed components as "x, z" (empty: none) */
+static PetscErrorCode FixedComponents(SPProblem p, char fixed[], size_t len)
+{
+  PetscFunctionBeginUser;
+  fixed[0] = 0;
+  for (PetscInt i = 0; i < p->nbc; ++i)
+    for (PetscInt k = 0; p->bc[i].type == SP_BC_DIRICHLET && k < p->bc[i].ncomps; ++k) {
+      const char name[2] = {"xyz"[p->bc[i].comps[k]], 0};
+      if (strstr(fixed, name)) continue;
+      PetscCall(PetscStrlcat(fixed, fixed[0] ? ", " : "", len));
+      PetscCall(PetscStrlcat(fixed, name, len));
+    }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static void FormatVector(PetscInt dim, const PetscReal v[3], char s[], size_t len)
+{
+  (void)PetscSNPrintf(s, len, dim == 2 ? "(%.4g, %.4g)" : "(%.4g, %.4g, %.4g)", (double)v[0], (double)v[1], (double)v[2]);
+}
+
 /* Collective, after the contact set-up: one line if the loads cannot be held. The net force is
    linear in the load factor between the ends of the load curves, so those and 1 are checked. */
 PetscErrorCode SPBCCheckBalance(DM dm, SPProblem p, SPContact c)
 {
   MPI_Comm  comm = PetscObjectComm((PetscObject)dm);
   PetscInt  dim  = p->dim, nq;
-  PetscReal F[4 * SP_MAX_BC], q[3][3], n[SP_MAX_OBSTACLES][3], orig[SP_MAX_OBSTACLES][3], perp[3], nhat[3], load = 1.0;
+  PetscReal F[4 * SP_MAX_BC], q[3][3], n[SP_MAX_OBSTACLES][3], orig[SP_MAX_OBSTACLES][3], perp[3] = {0, 0, 0}, nhat[3], load = 1.0;
   PetscInt  nn = 0;
   PetscBool unheld, pullOnly;
   char      fixed[64] = "", force[96];
@@ -267,20 +296,18 @@ PetscErrorCode SPBCCheckBalance(DM dm, SPProblem p, SPContact c)
     for (PetscInt d = 0; d < 3; ++d) orig[nn][d] = n[nn][d] = d < dim ? c->ob[k].normal[d] : 0.0;
     RemoveSpan(dim, n[nn], q, nq);
   }
+  PetscCall(FixedComponents(p, fixed, sizeof(fixed)));
   if (pullOnly && !CommonNormal(dim, orig, nn, q, nq, nhat)) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(ConditionForces(dm, p, F));
   unheld = Unheld(p, F, load, q, nq, n, nn, pullOnly ? nhat : NULL, perp);
   for (PetscInt i = 0; i < p->nbc && !unheld; ++i)
     for (PetscInt e = 0; e < 2 && !unheld; ++e) load = p->bc[i].ramp[e], unheld = load > 0.0 && Unheld(p, F, load, q, nq, n, nn, pullOnly ? nhat : NULL, perp);
-  if (!unheld) PetscFunctionReturn(PETSC_SUCCESS);
-  for (PetscInt i = 0; i < p->nbc; ++i)
-    for (PetscInt k = 0; p->bc[i].type == SP_BC_DIRICHLET && k < p->bc[i].ncomps; ++k) {
-      const char name[2] = {"xyz"[p->bc[i].comps[k]], 0};
-      if (strstr(fixed, name)) continue;
-      PetscCall(PetscStrlcat(fixed, fixed[0] ? ", " : "", sizeof(fixed)));
-      PetscCall(PetscStrlcat(fixed, name, sizeof(fixed)));
-    }
-  PetscCall(PetscSNPrintf(force, sizeof(force), dim == 2 ? "(%.4g, %.4g)" : "(%.4g, %.4g, %.4g)", (double)perp[0], (double)perp[1], (double)perp[2]));
+  if (!unheld) { /* the loads are held; the body must be too, against every rigid translation */
+    if (pullOnly || !FreeTranslation(dim, q, nq, orig, nn, perp)) PetscFunctionReturn(PETSC_SUCCESS);
+    FormatVector(dim, perp, force, sizeof(force));
+    SETERRQ(comm, PETSC_ERR_USER_INPUT, "nothing holds the body against a rigid translation along %s (Dirichlet conditions fix %s; %s): the solution is not unique. Add a Dirichlet condition on that component (a symmetry plane, or a face that is held)%s", force, fixed[0] ? fixed : "no component", c && c->enabled ? "no frictionless plane's normal has a part along it" : "there is no contact", c && c->enabled ? ", or friction (-contact_friction_mu)" : "");
+  }
+  FormatVector(dim, perp, force, sizeof(force));
   PetscCheck(!PullsOff(dim, perp, n, nn), comm, PETSC_ERR_USER_INPUT, "the loads' net force at load factor %.6g has a part %s that pulls the body off its obstacles (Dirichlet conditions fix %s; a plane only pushes, along its normal%s): no equilibrium exists. Reverse that load, or add a Dirichlet condition in that direction (if the load is right, check that each -contact_obstacle_<k>_normal points towards the body)", (double)load, force, fixed[0] ? fixed : "no component", pullOnly ? ", and its friction does not hold a body pulled off" : "");
   SETERRQ(comm, PETSC_ERR_USER_INPUT, "the loads' net force at load factor %.6g has a part %s that no support can hold (Dirichlet conditions fix %s; %s): no equilibrium exists. %s", (double)load, force, fixed[0] ? fixed : "no component", c && c->enabled ? "the obstacles are frictionless planes, which only push, along their normals" : "there is no contact", c && c->enabled ? "Add friction (-contact_friction_mu), a Dirichlet condition in that direction, or loads that balance" : "Add a Dirichlet condition in that direction, or loads that balance");
 }

@@ -145,6 +145,62 @@ static PetscErrorCode AccumulateFacets(SPContact c, Vec area, Vec meas, Vec coun
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Component d of the area-weighted outward normal of the slave facets at each point (global) */
+static PetscErrorCode NormalComponent(SPContact c, PetscInt d, Vec out)
+{
+  PetscSection ls;
+  PetscInt     nf = 0, *facets = NULL;
+  Vec          lo;
+  PetscScalar *po;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMGetLocalSection(c->dmC, &ls));
+  PetscCall(DMGetLocalVector(c->dmC, &lo));
+  PetscCall(VecZeroEntries(lo));
+  PetscCall(VecGetArray(lo, &po));
+  PetscCall(SlaveFacets(c, &nf, &facets));
+  for (PetscInt k = 0; k < nf; ++k) {
+    PetscInt  nv = 0, vert[4], off;
+    PetscReal x[12], n[3] = {0, 0, 0}, xc[3], m;
+    PetscCall(SPContactFacetVertices(c->dm, facets[k], &nv, vert, x));
+    PetscCall(SPMeshFacetGeometry(c->dm, c->dim, facets[k], n, xc, &m));
+    for (PetscInt a = 0; a < nv; ++a) {
+      PetscCall(PetscSectionGetOffset(ls, vert[a], &off));
+      po[off] += m * n[d];
+    }
+  }
+  PetscCall(PetscFree(facets));
+  PetscCall(VecRestoreArray(lo, &po));
+  PetscCall(VecZeroEntries(out));
+  PetscCall(DMLocalToGlobal(c->dmC, lo, ADD_VALUES, out));
+  PetscCall(DMRestoreLocalVector(c->dmC, &lo));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Each point's unit normal into its own body, from the outward normals of its slave facets: the
+   direction of the force a point with no contact element of its own receives (a two-pass vertex
+   that overhangs the other surface's end carries force only as a master) */
+static PetscErrorCode ComputeInwardNormals(SPContact c)
+{
+  Vec v;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMCreateGlobalVector(c->dmC, &v));
+  for (PetscInt d = 0; d < c->dim; ++d) {
+    const PetscScalar *pv;
+    PetscCall(NormalComponent(c, d, v));
+    PetscCall(VecGetArrayRead(v, &pv));
+    for (PetscInt i = 0; i < c->n; ++i) c->pt[i].nIn[d] = -PetscRealPart(pv[i]);
+    PetscCall(VecRestoreArrayRead(v, &pv));
+  }
+  PetscCall(VecDestroy(&v));
+  for (PetscInt i = 0; i < c->n; ++i) {
+    const PetscReal len = SPNorm(c->dim, c->pt[i].nIn);
+    for (PetscInt d = 0; d < c->dim; ++d) c->pt[i].nIn[d] = len > 0.0 ? c->pt[i].nIn[d] / len : 0.0;
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode SPContactComputeAreas(SPContact c)
 {
   Vec                area, meas, count;
@@ -181,5 +237,6 @@ PetscErrorCode SPContactComputeAreas(SPContact c)
   PetscCall(VecDestroy(&area));
   PetscCall(VecDestroy(&meas));
   PetscCall(VecDestroy(&count));
+  PetscCall(ComputeInwardNormals(c));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -184,9 +184,10 @@ PetscErrorCode SPContactRecoverForces(SPContact c)
   for (PetscInt i = 0; i < c->n; ++i) {
     SPContactPoint *pt = &c->pt[i];
     PetscReal       y[2];
+    const PetscReal *n = SPContactPointNormal(c, i);
     for (PetscInt d = 0; d < dim; ++d) pt->f[d] = PetscRealPart(f[i * dim + d]);
-    pt->press = pt->area > 0.0 ? SPDot(dim, pt->f, pt->geo.normal) / pt->area : 0.0;
-    for (PetscInt d = 0; d < dim; ++d) pt->ft[d] = pt->area > 0.0 ? pt->f[d] / pt->area - pt->press * pt->geo.normal[d] : 0.0;
+    pt->press = pt->area > 0.0 ? SPDot(dim, pt->f, n) / pt->area : 0.0;
+    for (PetscInt d = 0; d < dim; ++d) pt->ft[d] = pt->area > 0.0 ? pt->f[d] / pt->area - pt->press * n[d] : 0.0;
     SPFrictionTraction(c, i, y, pt->t, &pt->stick);
   }
   PetscCall(VecRestoreArrayRead(c->fvec, &f));

@@ -250,6 +250,7 @@ PetscErrorCode SPContactEvaluate(SPContact c, Vec X)
   PetscCall(SPProblemGetLocalState(c->problem, X, &locX));
   PetscCall(VecGetArrayRead(locX, &u));
   PetscCall(SPContactSearch(c, u, load));
+  PetscCall(SPContactWarnPinned(c));
   PetscCall(VecRestoreArrayRead(locX, &u));
   PetscCall(SPProblemRestoreLocalState(c->problem, &locX));
   for (PetscInt i = 0; i < c->n; ++i) {
@@ -274,6 +275,13 @@ PetscBool SPContactGeometricTangent(SPContact c)
   if (c->tangent == SP_TANGENT_FULL) return PETSC_TRUE;
   if (c->tangent == SP_TANGENT_FROZEN) return PETSC_FALSE;
   return c->setSettled;
+}
+
+/* The normal of point i's recovered force: its contact element's, or with none (a two-pass vertex
+   that receives force only as a master) its own surface's into its body */
+const PetscReal *SPContactPointNormal(SPContact c, PetscInt i)
+{
+  return c->pt[i].geo.elem != SP_ELEM_NONE ? c->pt[i].geo.normal : c->pt[i].nIn;
 }
 
 /* Contact element of point i at the last evaluated state: *nd dofs (global indices, constrained

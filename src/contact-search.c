@@ -3,13 +3,31 @@
    whichever gives the smaller gap; the element's gap and normal go into the point's record. */
 #include <spcontact-impl.h>
 
-/* The most penetrating obstacle at x: index, gap, normal */
-static void ObstacleGap(SPContact c, PetscReal load, const PetscReal x[], PetscInt *k, PetscReal *g, PetscReal n[])
+/* Whether a slave vertex with Dirichlet-fixed dofs (sdof < 0) cannot move along n: its gap to that
+   obstacle is prescribed, so contact cannot act there (the condition's reaction carries its force);
+   enforced, its penetration would never close (a clamped corner under a rigid plate) */
+static PetscBool Pinned(PetscInt dim, const PetscInt sdof[], const PetscReal n[])
 {
-  *g = PETSC_MAX_REAL;
+  PetscReal free = 0.0;
+
+  for (PetscInt d = 0; d < dim; ++d)
+    if (sdof[d] >= 0) free += n[d] * n[d];
+  return free <= 1e-12 ? PETSC_TRUE : PETSC_FALSE;
+}
+
+/* The most penetrating obstacle at point i's x that it can move against: index, gap, normal;
+   *pinned: one it penetrates and cannot move against (-1: none) */
+static void ObstacleGap(SPContact c, PetscReal load, PetscInt i, PetscInt *k, PetscReal *g, PetscReal n[], PetscInt *pinned)
+{
+  *g      = PETSC_MAX_REAL;
+  *pinned = -1;
   for (PetscInt j = 0; j < c->nob; ++j) {
     PetscReal gj, nj[3], Hj[9];
-    SPObstacleGap(&c->ob[j], c->dim, load, x, &gj, nj, Hj);
+    SPObstacleGap(&c->ob[j], c->dim, load, c->pt[i].geo.x, &gj, nj, Hj);
+    if (Pinned(c->dim, c->pt[i].sdof, nj)) {
+      if (gj < 0.0) *pinned = j;
+      continue;
+    }
     if (gj < *g) {
       *g = gj;
       *k = j;
@@ -32,6 +50,7 @@ PetscErrorCode SPContactSearch(SPContact c, const PetscScalar u[], PetscReal loa
     for (PetscInt d = 0; d < c->dim; ++d) c->pt[i].geo.u[d] = PetscRealPart(u[off + d]), c->pt[i].geo.x[d] = c->pt[i].X[d] + c->pt[i].geo.u[d];
   }
   if (c->npair) PetscCall(SPContactPairsExchange(c, u));
+  c->pinnedCount = 0;
   for (PetscInt i = 0; i < c->n; ++i) {
     SPPointGeometry *geo = &c->pt[i].geo;
     for (PetscInt d = 0; d < 3; ++d) geo->normal[d] = 0.0;
@@ -41,7 +60,9 @@ PetscErrorCode SPContactSearch(SPContact c, const PetscScalar u[], PetscReal loa
     if (c->pt[i].onObstacle) {
       PetscReal g, no[3];
       PetscInt  k = -1;
-      ObstacleGap(c, load, geo->x, &k, &g, no);
+      PetscInt  pinned;
+      ObstacleGap(c, load, i, &k, &g, no, &pinned);
+      if (pinned >= 0 && !c->pinnedCount++) c->pinnedPoint = i, c->pinnedObstacle = pinned;
       if (g < geo->gap) {
         geo->gap      = g;
         geo->elem     = SP_ELEM_OBSTACLE;
@@ -105,5 +126,33 @@ PetscErrorCode SPContactObstacleCycle(SPContact c, PetscInt *n, PetscInt pair[2]
   PetscCallMPI(MPI_Allreduce(&m[1], &all[1], 1, MPIU_INT, MPI_MAX, comm));
   *n = all[0];
   if (*n) pair[0] = all[1] / SP_MAX_OBSTACLES, pair[1] = all[1] % SP_MAX_OBSTACLES;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Collective, after a search, until it has warned once: the points that penetrate an obstacle
+   along whose normal a Dirichlet condition fixes them (a clamped corner under a rigid plate, a face
+   pushed into a plane by a prescribed displacement). They are left out of that contact: their gap
+   is prescribed, and enforced it would never close (shifted: the stall and every cut-back). */
+PetscErrorCode SPContactWarnPinned(SPContact c)
+{
+  MPI_Comm    comm = PetscObjectComm((PetscObject)c->dm);
+  PetscMPIInt rank, who, mine;
+  PetscInt    n;
+  PetscReal   x[4] = {0, 0, 0, 0};
+  char        at[96];
+
+  PetscFunctionBeginUser;
+  if (c->pinnedWarned || !c->nob) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  mine = c->pinnedCount ? rank : PETSC_MPI_INT_MAX;
+  PetscCallMPI(MPI_Allreduce(&mine, &who, 1, MPI_INT, MPI_MIN, comm));
+  if (who == PETSC_MPI_INT_MAX) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCallMPI(MPI_Allreduce(&c->pinnedCount, &n, 1, MPIU_INT, MPI_SUM, comm));
+  if (rank == who)
+    for (PetscInt d = 0; d < c->dim; ++d) x[d] = c->pt[c->pinnedPoint].X[d], x[3] = (PetscReal)c->pinnedObstacle;
+  PetscCallMPI(MPI_Bcast(x, 4, MPIU_REAL, who, comm));
+  c->pinnedWarned = PETSC_TRUE;
+  PetscCall(PetscSNPrintf(at, sizeof(at), c->dim == 2 ? "(%.6g, %.6g)" : "(%.6g, %.6g, %.6g)", (double)x[0], (double)x[1], (double)x[2]));
+  PetscCall(PetscFPrintf(comm, PETSC_STDERR, "spcontact: warning: %" PetscInt_FMT " contact point(s) penetrate an obstacle along whose normal a Dirichlet condition fixes them (e.g. the vertex at %s, obstacle %d): they are left out of that contact, since their gap is prescribed (the condition's reaction carries their force)\n", n, at, (int)x[3]));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

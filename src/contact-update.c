@@ -495,8 +495,8 @@ PetscErrorCode SPContactComputeStats(SPContact c)
     const SPContactPoint *pt = &c->pt[i];
     PetscReal             dx[3] = {0, 0, 0};
     if (pt->primary) {
-      const PetscReal fn = SPDot(c->dim, pt->f, pt->geo.normal);
-      for (PetscInt d = 0; d < c->dim; ++d) f[d] += pt->f[d], ft[d] += pt->f[d] - fn * pt->geo.normal[d];
+      const PetscReal *n = SPContactPointNormal(c, i), fn = SPDot(c->dim, pt->f, n);
+      for (PetscInt d = 0; d < c->dim; ++d) f[d] += pt->f[d], ft[d] += pt->f[d] - fn * n[d];
     }
     peak = PetscMax(peak, pt->press);
     if (pt->press <= 0.0) continue;

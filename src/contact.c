@@ -433,7 +433,7 @@ PetscErrorCode SPContactWritePoints(SPContact c, Vec X, const char file[])
     for (PetscInt d = 0; d < c->dim; ++d) r[d] = pt->X[d];
     r[3] = pt->area;
     r[4] = pt->eps;
-    r[5] = pt->geo.gap;
+    r[5] = pt->geo.elem != SP_ELEM_NONE ? pt->geo.gap : (PetscReal)NAN; /* as in the h5: no gap exists */
     r[6] = pt->st.sN;
     r[7] = pt->press;
     r[8] = SPContactPointActive(c, i); /* at X, as the summary counts it (st.active is booked at iteration boundaries only) */

@@ -89,6 +89,21 @@ static PetscErrorCode Interrupted(SPApp app, PetscBool *stop)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* A run stopped by -max_wall_time is resumable: how (or why not). step0: the step it started
+   after (a restart's), so a restarted run with no step of its own points back to its file. */
+static PetscErrorCode WallTimeHint(SPApp app, PetscInt step0, PetscInt step, PetscReal done)
+{
+  const char *prefix;
+
+  PetscFunctionBeginUser;
+  PetscCall(SPOutputGetPrefix(app->output, &prefix));
+  if (step == 0) PetscCall(PetscPrintf(app->comm, "spcontact: stopped by -max_wall_time before any load step converged: nothing to restart from; raise -max_wall_time\n"));
+  else if (step == step0) PetscCall(PetscPrintf(app->comm, "spcontact: stopped by -max_wall_time before a load step converged after the restart (load step %" PetscInt_FMT ", load factor %g); restart with -restart %s again, with a larger -max_wall_time\n", step, (double)done, app->restartFile));
+  else if (app->output->enabled) PetscCall(PetscPrintf(app->comm, "spcontact: stopped by -max_wall_time after load step %" PetscInt_FMT " (load factor %g); restart with -restart %s.h5.part\n", step, (double)done, prefix));
+  else PetscCall(PetscPrintf(app->comm, "spcontact: stopped by -max_wall_time after load step %" PetscInt_FMT " (load factor %g); no restart data (-output_fields false)\n", step, (double)done));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* Why the run must stop before attempting load factor `load` after a failure (ok false) or at a
    safe point (ok true): the wall time, the cut-back budget, the cut-back floor. NULL: go on. */
 static PetscErrorCode StopReason(SPApp app, PetscBool ok, PetscReal inc, char why[], size_t len, PetscBool *stop)
@@ -99,7 +114,11 @@ static PetscErrorCode StopReason(SPApp app, PetscBool ok, PetscReal inc, char wh
   *stop = PETSC_TRUE;
   PetscCall(PetscTime(&t));
   PetscCallMPI(MPI_Bcast(&t, 1, MPI_DOUBLE, 0, app->comm)); /* one decision on every rank */
-  if (app->maxWallTime > 0.0 && t - app->progress.t0 > app->maxWallTime) PetscCall(PetscSNPrintf(why, len, "wall time %.3g s exceeds -max_wall_time %g", (double)(t - app->progress.t0), (double)app->maxWallTime));
+  app->wallStopped = PETSC_FALSE;
+  if (app->maxWallTime > 0.0 && t - app->progress.t0 > app->maxWallTime) {
+    app->wallStopped = PETSC_TRUE;
+    PetscCall(PetscSNPrintf(why, len, "wall time %.3g s exceeds -max_wall_time %g", (double)(t - app->progress.t0), (double)app->maxWallTime));
+  }
   else if (!ok && app->cutbacks >= app->maxCutbacks) PetscCall(PetscSNPrintf(why, len, "cut-back budget spent (%" PetscInt_FMT " cut-backs, -load_max_cutbacks)", app->cutbacks));
   else if (!ok && 0.5 * inc < app->minIncrement) PetscCall(PetscSNPrintf(why, len, "halving the increment %g would go below -load_min_increment %g", (double)inc, (double)app->minIncrement));
   else *stop = PETSC_FALSE;
@@ -125,7 +144,7 @@ static PetscErrorCode Regrow(SPApp app, PetscReal *inc)
 PetscErrorCode SPLoadingRun(SPApp app)
 {
   PetscReal done = 0.0, inc = 1.0 / app->loadSteps;
-  PetscInt  step = 0;
+  PetscInt  step = 0, step0;
   PetscBool halt = PETSC_FALSE;
   PetscInt  its0, lits0; /* solver counts before the step, for the progress line */
   Vec       ubackup;
@@ -140,6 +159,7 @@ PetscErrorCode SPLoadingRun(SPApp app)
   PetscCall(SPSolverGetCounts(app->solver, &its0, &lits0, NULL));
   app->converged = PETSC_TRUE;
   if (app->restartFile[0]) done = app->loadReached, inc = app->loadInc, step = app->stepsDone; /* SPRestartLoad */
+  step0 = step;
   while (done < 1.0 - 1e-12) {
     PetscReal load = PetscMin(1.0, done + inc);
     PetscBool ok = PETSC_TRUE, stop;
@@ -171,6 +191,7 @@ PetscErrorCode SPLoadingRun(SPApp app)
     if (stop) {
       app->converged = PETSC_FALSE;
       PetscCall(PetscPrintf(app->comm, "stopping: load factor %g not reached: %s; last converged load factor %g\n", (double)load, why, (double)done));
+      if (app->wallStopped) PetscCall(WallTimeHint(app, step0, step, done));
       break;
     }
     app->cutbacks++;

@@ -120,6 +120,16 @@ static void NameTheOption(char msg[], size_t n)
   }
 }
 
+/* PETSc messages that name a cure for PETSc's developers (a configure option) told as a user's */
+static void UserAdvice(char msg[], size_t n)
+{
+  const char *g = strstr(msg, "No grid generator of dimension ");
+  const int   dim = g ? atoi(g + strlen("No grid generator of dimension ")) : 0;
+
+  if (!g) return;
+  (void)snprintf(msg, n, "-dm_plex_simplex 1 on a box mesh needs a %dD mesh generator (%s) that this PETSc was built without: make a simplex mesh with gmsh and give it with -mesh_file, or keep the box's %s (-dm_plex_simplex 0)", dim, dim == 3 ? "TetGen" : "Triangle", dim == 3 ? "hexahedra" : "quadrilaterals");
+}
+
 /* One line: on rank 0 when every rank raised the error; else on each rank that did, and every
    rank stops (MPI_Abort) */
 static int ReportOneLine(OneLineError *e)
@@ -127,6 +137,7 @@ static int ReportOneLine(OneLineError *e)
   PetscMPIInt rank;
   MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
   NameTheOption(e->message, sizeof(e->message));
+  UserAdvice(e->message, sizeof(e->message));
   if (EveryRankFailed()) {
     if (rank == 0) fprintf(stderr, "spcontact: error: %s\n", e->message);
     (void)PetscPopErrorHandler();

@@ -404,6 +404,22 @@ PetscErrorCode SPMeshCreateCompletedLabel(DM dm, const char src[], PetscInt nv, 
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Outward unit normal, centroid and measure of a boundary facet (outward: away from its cell) */
+PetscErrorCode SPMeshFacetGeometry(DM dm, PetscInt dim, PetscInt f, PetscReal n[3], PetscReal x[3], PetscReal *area)
+{
+  const PetscInt *supp;
+  PetscReal       xc[3] = {0, 0, 0}, vol, len = 0.0, side = 0.0;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMPlexComputeCellGeometryFVM(dm, f, area, x, n));
+  PetscCall(DMPlexGetSupport(dm, f, &supp));
+  PetscCall(DMPlexComputeCellGeometryFVM(dm, supp[0], &vol, xc, NULL));
+  for (PetscInt d = 0; d < dim; ++d) len += n[d] * n[d], side += n[d] * (x[d] - xc[d]);
+  len = PetscSqrtReal(len) * (side < 0.0 ? -1.0 : 1.0);
+  for (PetscInt d = 0; d < dim; ++d) n[d] /= len;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* The facets (height-1 points) of the given strata of label `name`, local to this rank; free with PetscFree */
 PetscErrorCode SPMeshGetLabelFacets(DM dm, const char name[], PetscInt nv, const PetscInt values[], PetscInt *n, PetscInt **facets)
 {

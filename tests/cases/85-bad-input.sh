@@ -11,6 +11,7 @@ test_bad_input_catalogue() {
   printf '$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Nodes\n' > "$CASE_DIR/truncated.msh"
   mkdir -p "$CASE_DIR/taken.h5" "$CASE_DIR/busy.h5.part" "$CASE_DIR/busy2-surface.xmf.part"
   touch "$CASE_DIR/afile"
+  grep -v '^-contact' input/block2d.opts > "$CASE_DIR/nocontact.opts"
   printf -- '-load_steps 1 # an options file naming a missing one\n-options_file /nonexistent/inner.opts\n' > "$CASE_DIR/outer.opts"
   printf -- '-options_file %s/outer.opts\n' "$CASE_DIR" > "$CASE_DIR/middle.opts"
   printf -- '-options_file %s/self.opts\n' "$CASE_DIR" > "$CASE_DIR/self.opts"
@@ -59,7 +60,13 @@ net shear while a load curve holds the balancing pressure back (load factor 0.5)
 suction on B1's top pulls the block off its plane (the sign of a plane's push; was 10 cut-backs)|input/block2d.opts|-bc_1_value -0.01
 3D suction pulls the block off its plane, x and y fixed|input/block3d.opts|-bc_2_value -0.01
 sideways push on a block in a V of two frictionless planes (one plane would have to pull)|input/block2d.opts|-bc_0_type traction -bc_0_value 0,0 -bc_1_type traction -bc_1_value 0.001,0 -contact_obstacle_0_normal 1,1 -contact_obstacle_1_type plane -contact_obstacle_1_point 1,0 -contact_obstacle_1_normal -1,1
-suction on a tilted plane (pull-off advice, not friction)|input/block2d.opts|-bc_1_value -0.01 -bc_0_type traction -bc_0_value 0,0 -contact_obstacle_0_normal 0.1,1
+suction on a tilted plane (pull-off advice, not friction)|input/block2d.opts|-bc_1_value -0.01 -contact_obstacle_0_normal 0.1,1
+simplex box in 2D (no Triangle in Debian's PETSc: PETSc's configure advice before)|input/block2d.opts|-dm_plex_simplex 1
+simplex box in 3D (no TetGen)|input/block3d.opts|-dm_plex_simplex 1
+B1 with nothing fixing x (a free rigid translation; was rank-dependent displacements, exit 0)|input/block2d.opts|-bc_0_type pressure -bc_0_value 0
+B2 with nothing fixing x (was exit 0 on 1 and 3 ranks, cut-backs on 2)|input/hertz2d.opts|-bc_0_type pressure -bc_0_value 0
+3D block with nothing fixing y (was 13 cut-backs of DIVERGED_LINEAR_SOLVE)|input/block3d.opts|-bc_1_type pressure -bc_1_value 0
+elasticity without contact and nothing fixing y|@DIR@/nocontact.opts|-bc_1_type traction -bc_1_value 0,0
 suction on a block on a plane with friction (friction holds no pull-off; was 13 cut-backs)|input/block2d.opts|-bc_1_value -0.01 -contact_friction_mu 0.3
 plane normal pointing away from the body|input/block2d.opts|-contact_obstacle_0_normal 0,-1
 label value given twice (the load was applied twice)|input/block2d.opts|-bc_1_values 3,3
@@ -216,12 +223,16 @@ CASES
 
 # A misspelt option is reported (one warning line per unused option) and the run is otherwise
 # the default one; -options_left false silences the report
-# The load-balance refusal on 1, 2 and 3 ranks (each rank sums the facets it owns): the same line
+# The load-balance refusal on 1, 2 and 3 ranks (each rank sums the facets it owns): the same line;
+# and the free rigid translation (B1 with nothing fixing x: it used to give another displacement on
+# 3 ranks than on 1 and 2, each run exit 0)
 test_bad_input_balance_ranks() {
   local rc=0 np
   for np in 1 2 3; do
     spc "$CASE_DIR/b$np.txt" $np -options_file input/block3d.opts -bc_0_type traction -bc_0_value 0.001,0,0 -output_dir "$CASE_DIR" -output_name b$np
     assert_eq "balance refusal on $np rank(s)" "$(grep -c "^spcontact: error: the loads' net force at load factor 1 has a part (0.001, 0, 0) that no support can hold" "$CASE_DIR/b$np.txt")" 1 || rc=1
+    spc "$CASE_DIR/t$np.txt" $np -options_file input/block2d.opts -bc_0_type pressure -bc_0_value 0 -output_dir "$CASE_DIR" -output_name t$np
+    assert_eq "free translation refused on $np rank(s)" "$(grep -c "^spcontact: error: nothing holds the body against a rigid translation along (1, 0) (Dirichlet conditions fix no component; no frictionless plane's normal has a part along it)" "$CASE_DIR/t$np.txt")" 1 || rc=1
   done
   return $rc
 }
