@@ -32,11 +32,11 @@ source scripts/env.sh
 sizes=12; ranks=1; methods=penalty,shifted,alm; floor=1; out=build/bench; extra=()
 while [ $# -gt 0 ]; do
   case $1 in
-    --sizes) sizes=$2; shift 2 ;;
-    --ranks) ranks=$2; shift 2 ;;
-    --methods) methods=$2; shift 2 ;;
+    --sizes) [ $# -ge 2 ] || { echo "bench.sh: --sizes needs a value (see --help)" >&2; exit 1; }; sizes=$2; shift 2 ;;
+    --ranks) [ $# -ge 2 ] || { echo "bench.sh: --ranks needs a value (see --help)" >&2; exit 1; }; ranks=$2; shift 2 ;;
+    --methods) [ $# -ge 2 ] || { echo "bench.sh: --methods needs a value (see --help)" >&2; exit 1; }; methods=$2; shift 2 ;;
     --no-floor) floor=0; shift ;;
-    --out) out=$2; shift 2 ;;
+    --out) [ $# -ge 2 ] || { echo "bench.sh: --out needs a value (see --help)" >&2; exit 1; }; out=$2; shift 2 ;;
     --) shift; extra=("$@"); break ;;
     -h|--help) sed -n '2,31p' "$0"; exit 0 ;;
     *) echo "bench.sh: unknown argument $1 (see --help)" >&2; exit 1 ;;

@@ -14,8 +14,8 @@ np=1; cases=B2,B3,B4,B6,patch2p; methods=penalty,shifted,alm; extra=()
 [[ ${1:-} =~ ^[0-9]+$ ]] && { np=$1; shift; }
 while [ $# -gt 0 ]; do
   case $1 in
-    --cases) cases=$2; shift 2 ;;
-    --methods) methods=$2; shift 2 ;;
+    --cases) [ $# -ge 2 ] || { echo "robustness.sh: --cases needs a value (see --help)" >&2; exit 1; }; cases=$2; shift 2 ;;
+    --methods) [ $# -ge 2 ] || { echo "robustness.sh: --methods needs a value (see --help)" >&2; exit 1; }; methods=$2; shift 2 ;;
     --) shift; extra=("$@"); break ;;
     -h|--help) sed -n '2,10p' "$0"; exit 0 ;;
     *) echo "robustness.sh: unknown argument $1 (see --help)" >&2; exit 1 ;;
