@@ -81,6 +81,23 @@ static PetscErrorCode RegionSetFromOptions(SPProblem p, PetscInt k, PetscBool gi
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* One warning for a Poisson's ratio near 0.5 (lambda / mu = 2 nu / (1 - 2 nu) > 49): P1/Q1 elements
+   lock there, and eps = alpha E / h is small against the bulk stiffness, so the shift update
+   contracts slowly (QA helper 28: B2 at nu 0.4999 with shifted, 20 cut-backs; peak pressure 80 %
+   above Hertz's once converged). Collective (the same options on every rank). */
+static PetscErrorCode WarnNearlyIncompressible(MPI_Comm comm, SPProblem p)
+{
+  PetscFunctionBeginUser;
+  for (PetscInt j = 0; j < p->nmat; ++j) {
+    char name[64] = "-material_nu";
+    if (p->mat[j].nu <= 0.49) continue;
+    if (p->regions) PetscCall(PetscSNPrintf(name, sizeof(name), "-material_%" PetscInt_FMT "_nu", p->mat[j].k));
+    PetscCall(PetscFPrintf(comm, PETSC_STDERR, "spcontact: warning: %s %g is near 0.5: P1/Q1 elements lock there (too stiff: B2's peak pressure is 80 %% above Hertz's at 0.4999), and with contact eps = alpha E / h is small against the bulk stiffness, so the shift update contracts slowly (B2 at 0.4999: 20 cut-backs); with contact give -contact_shift_accel schur or -contact_alpha 1000; the locking itself needs mixed or B-bar elements, which spcontact does not have\n", name, (double)p->mat[j].nu));
+    break;
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* -material_model/_E/_nu where every region material gives its own, and -material_label without
    region materials, are reported unused (the end-of-run report names them, as a misspelt one) */
 static PetscErrorCode ReportUnusedDefaults(SPProblem p, const PetscInt own[3])
@@ -139,6 +156,7 @@ PetscErrorCode SPProblemSetFromOptions(SPProblem p)
     PetscCheck(p->mat[j].law == p->mat[0].law, comm, PETSC_ERR_USER_INPUT, "-material_%" PetscInt_FMT "_law %s differs from -material_%" PetscInt_FMT "_law %s: the region materials of a run must share one law", p->mat[j].k, p->mat[j].lawName, p->mat[0].k, p->mat[0].lawName);
   PetscCheck(!(p->regions && p->mmsAmp != 0.0), comm, PETSC_ERR_USER_INPUT, "-material_mms: the manufactured solution needs one material (-material_E, -material_nu); drop the -material_<k>_* options");
   for (PetscInt j = 0; j < p->nmat; ++j) p->mat[j].law->parameters(p->mat[j].E, p->mat[j].nu, p->mat[j].param);
+  PetscCall(WarnNearlyIncompressible(comm, p));
   PetscCall(SPBCSetFromOptions(comm, p->dim, &p->nbc, p->bc));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -171,3 +171,22 @@ CASES
   grep -q 'value(s) 20 .*-material_<k>_label_value' "$CASE_DIR/e1.txt" && echo "cell without material: names value 20 and -material_<k>_label_value ok" || { echo "cell without material: message does not name value 20 and the option FAILED"; rc=1; }
   return $rc
 }
+
+# Set-up warnings for materials that a contact run handles badly (QA helper 28), each with its
+# cure checked: a Poisson's ratio near 0.5 (B2 at 0.4999 with the defaults: 20 cut-backs; with the
+# advised -contact_shift_accel schur it converges without a cut-back), and a pair whose slave is
+# 1e6 times stiffer than its master (20 cut-backs in 100 s; swapped: no warning), on 1 and 2 ranks
+test_materials_contact_warnings() {
+  local rc=0 np
+  for np in 1 2; do
+    spc "$CASE_DIR/nu$np.txt" $np -options_file input/hertz2d.opts -material_nu 0.4999 -contact_shift_accel schur -output_dir "$CASE_DIR" -output_name nu$np || rc=1
+    assert_eq "nu warning on $np rank(s)" "$(grep -c '^spcontact: warning: -material_nu 0.4999 is near 0.5: P1/Q1 elements lock there' "$CASE_DIR/nu$np.txt")" 1 || rc=1
+    assert_eq "the advised schur update converges without a cut-back on $np rank(s)" "$(sval "$CASE_DIR/nu$np.txt" cutbacks)" 0 || rc=1
+    spc "$CASE_DIR/st$np.txt" $np -options_file input/hertz2d_dissimilar.opts -material_0_E 1e6 -material_1_E 1 -snes_max_it 2 -load_max_cutbacks 0 -output_dir "$CASE_DIR" -output_name st$np
+    assert_eq "stiff slave warning on $np rank(s)" "$(grep -c '^spcontact: warning: contact pair 0: its slave surface is 1e+06 times stiffer than its master (E 1e+06 against 1)' "$CASE_DIR/st$np.txt")" 1 || rc=1
+  done
+  spc "$CASE_DIR/sw.txt" 1 -options_file input/hertz2d_dissimilar.opts -material_0_E 1 -material_1_E 1e6 -output_dir "$CASE_DIR" -output_name sw || rc=1
+  assert_eq "no warning with the slave on the soft body" "$(grep -c 'times stiffer' "$CASE_DIR/sw.txt")" 0 || rc=1
+  assert_eq "nor for nu 0.3" "$(grep -c 'near 0.5' "$CASE_DIR/sw.txt")" 0 || rc=1
+  return $rc
+}
