@@ -97,13 +97,14 @@ static PetscErrorCode SlaveFacets(SPContact c, PetscInt *nf, PetscInt **facets)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Sum facet contributions into local vectors (area, facet measure, facet count), then to owners */
-static PetscErrorCode AccumulateFacets(SPContact c, Vec area, Vec meas, Vec count)
+/* Sum facet contributions into local vectors (area, facet measure, facet count, and the measure-
+   weighted outward normal's components), then to owners */
+static PetscErrorCode AccumulateFacets(SPContact c, Vec area, Vec meas, Vec count, Vec nrm[])
 {
   PetscSection ls;
   PetscInt     nf = 0, *facets = NULL;
-  Vec          la, lm, lc;
-  PetscScalar *pa, *pm, *pc;
+  Vec          la, lm, lc, ln[3];
+  PetscScalar *pa, *pm, *pc, *pn[3];
 
   PetscFunctionBeginUser;
   PetscCall(DMGetLocalSection(c->dmC, &ls));
@@ -116,17 +117,24 @@ static PetscErrorCode AccumulateFacets(SPContact c, Vec area, Vec meas, Vec coun
   PetscCall(VecGetArray(la, &pa));
   PetscCall(VecGetArray(lm, &pm));
   PetscCall(VecGetArray(lc, &pc));
+  for (PetscInt d = 0; d < c->dim; ++d) {
+    PetscCall(DMGetLocalVector(c->dmC, &ln[d]));
+    PetscCall(VecZeroEntries(ln[d]));
+    PetscCall(VecGetArray(ln[d], &pn[d]));
+  }
   PetscCall(SlaveFacets(c, &nf, &facets));
   for (PetscInt k = 0; k < nf; ++k) {
     PetscInt  nv = 0, vert[4], off;
-    PetscReal x[12], w[4], m;
+    PetscReal x[12], w[4], m, n[3] = {0, 0, 0}, xc[3], mf;
     PetscCall(SPContactFacetVertices(c->dm, facets[k], &nv, vert, x));
+    PetscCall(SPMeshFacetGeometry(c->dm, c->dim, facets[k], n, xc, &mf));
     FacetWeights(c->dim, nv, x, w, &m);
     for (PetscInt a = 0; a < nv; ++a) {
       PetscCall(PetscSectionGetOffset(ls, vert[a], &off));
       pa[off] += w[a];
       pm[off] += m;
       pc[off] += 1.0;
+      for (PetscInt d = 0; d < c->dim; ++d) pn[d][off] += m * n[d];
     }
   }
   PetscCall(PetscFree(facets));
@@ -142,58 +150,27 @@ static PetscErrorCode AccumulateFacets(SPContact c, Vec area, Vec meas, Vec coun
   PetscCall(DMRestoreLocalVector(c->dmC, &la));
   PetscCall(DMRestoreLocalVector(c->dmC, &lm));
   PetscCall(DMRestoreLocalVector(c->dmC, &lc));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-/* Component d of the area-weighted outward normal of the slave facets at each point (global) */
-static PetscErrorCode NormalComponent(SPContact c, PetscInt d, Vec out)
-{
-  PetscSection ls;
-  PetscInt     nf = 0, *facets = NULL;
-  Vec          lo;
-  PetscScalar *po;
-
-  PetscFunctionBeginUser;
-  PetscCall(DMGetLocalSection(c->dmC, &ls));
-  PetscCall(DMGetLocalVector(c->dmC, &lo));
-  PetscCall(VecZeroEntries(lo));
-  PetscCall(VecGetArray(lo, &po));
-  PetscCall(SlaveFacets(c, &nf, &facets));
-  for (PetscInt k = 0; k < nf; ++k) {
-    PetscInt  nv = 0, vert[4], off;
-    PetscReal x[12], n[3] = {0, 0, 0}, xc[3], m;
-    PetscCall(SPContactFacetVertices(c->dm, facets[k], &nv, vert, x));
-    PetscCall(SPMeshFacetGeometry(c->dm, c->dim, facets[k], n, xc, &m));
-    for (PetscInt a = 0; a < nv; ++a) {
-      PetscCall(PetscSectionGetOffset(ls, vert[a], &off));
-      po[off] += m * n[d];
-    }
+  for (PetscInt d = 0; d < c->dim; ++d) {
+    PetscCall(VecRestoreArray(ln[d], &pn[d]));
+    PetscCall(VecZeroEntries(nrm[d]));
+    PetscCall(DMLocalToGlobal(c->dmC, ln[d], ADD_VALUES, nrm[d]));
+    PetscCall(DMRestoreLocalVector(c->dmC, &ln[d]));
   }
-  PetscCall(PetscFree(facets));
-  PetscCall(VecRestoreArray(lo, &po));
-  PetscCall(VecZeroEntries(out));
-  PetscCall(DMLocalToGlobal(c->dmC, lo, ADD_VALUES, out));
-  PetscCall(DMRestoreLocalVector(c->dmC, &lo));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Each point's unit normal into its own body, from the outward normals of its slave facets: the
+/* Each point's unit normal into its own body (minus its facets' outward normals, summed): the
    direction of the force a point with no contact element of its own receives (a two-pass vertex
    that overhangs the other surface's end carries force only as a master) */
-static PetscErrorCode ComputeInwardNormals(SPContact c)
+static PetscErrorCode SetInwardNormals(SPContact c, Vec nrm[])
 {
-  Vec v;
-
   PetscFunctionBeginUser;
-  PetscCall(DMCreateGlobalVector(c->dmC, &v));
   for (PetscInt d = 0; d < c->dim; ++d) {
     const PetscScalar *pv;
-    PetscCall(NormalComponent(c, d, v));
-    PetscCall(VecGetArrayRead(v, &pv));
+    PetscCall(VecGetArrayRead(nrm[d], &pv));
     for (PetscInt i = 0; i < c->n; ++i) c->pt[i].nIn[d] = -PetscRealPart(pv[i]);
-    PetscCall(VecRestoreArrayRead(v, &pv));
+    PetscCall(VecRestoreArrayRead(nrm[d], &pv));
   }
-  PetscCall(VecDestroy(&v));
   for (PetscInt i = 0; i < c->n; ++i) {
     const PetscReal len = SPNorm(c->dim, c->pt[i].nIn);
     for (PetscInt d = 0; d < c->dim; ++d) c->pt[i].nIn[d] = len > 0.0 ? c->pt[i].nIn[d] / len : 0.0;
@@ -203,7 +180,7 @@ static PetscErrorCode ComputeInwardNormals(SPContact c)
 
 PetscErrorCode SPContactComputeAreas(SPContact c)
 {
-  Vec                area, meas, count;
+  Vec                area, meas, count, nrm[3];
   const PetscScalar *pa, *pm, *pc;
   PetscReal          E, range[2] = {PETSC_MIN_REAL, 0.0};
 
@@ -211,7 +188,10 @@ PetscErrorCode SPContactComputeAreas(SPContact c)
   PetscCall(DMCreateGlobalVector(c->dmC, &area));
   PetscCall(VecDuplicate(area, &meas));
   PetscCall(VecDuplicate(area, &count));
-  PetscCall(AccumulateFacets(c, area, meas, count));
+  for (PetscInt d = 0; d < c->dim; ++d) PetscCall(VecDuplicate(area, &nrm[d]));
+  PetscCall(AccumulateFacets(c, area, meas, count, nrm));
+  PetscCall(SetInwardNormals(c, nrm));
+  for (PetscInt d = 0; d < c->dim; ++d) PetscCall(VecDestroy(&nrm[d]));
   PetscCall(VecGetArrayRead(area, &pa));
   PetscCall(VecGetArrayRead(meas, &pm));
   PetscCall(VecGetArrayRead(count, &pc));
@@ -237,6 +217,5 @@ PetscErrorCode SPContactComputeAreas(SPContact c)
   PetscCall(VecDestroy(&area));
   PetscCall(VecDestroy(&meas));
   PetscCall(VecDestroy(&count));
-  PetscCall(ComputeInwardNormals(c));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -100,7 +100,7 @@ PetscErrorCode SPContactWarnCorners(SPContact c)
   all[0] = n[0];
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, all, 1, MPIU_INT, MPI_SUM, comm));
   PetscCallMPI(MPI_Allreduce(&n[1], &all[1], 1, MPIU_INT, MPI_MAX, comm));
-  if (all[0]) PetscCall(PetscFPrintf(comm, PETSC_STDERR, "spcontact: warning: %" PetscInt_FMT " contact point(s) touch two obstacles at the start (e.g. obstacles %" PetscInt_FMT " and %" PetscInt_FMT "); a point holds one obstacle at a time, so the solve can cycle between them (README, Known limits): round or chamfer the corner, or give one of the two a Dirichlet condition instead of an obstacle where the body stays on it\n", all[0], all[1] / SP_MAX_OBSTACLES, all[1] % SP_MAX_OBSTACLES));
+  if (all[0]) PetscCall(PetscFPrintf(comm, PETSC_STDERR, "spcontact: warning: %" PetscInt_FMT " contact point(s) touch two obstacles at the start (e.g. obstacles %" PetscInt_FMT " and %" PetscInt_FMT "), and the solve can cycle between them: " SP_CORNER_ADVICE "\n", all[0], all[1] / SP_MAX_OBSTACLES, all[1] % SP_MAX_OBSTACLES));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
