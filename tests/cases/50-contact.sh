@@ -504,7 +504,7 @@ test_contact_corner_two_obstacles_warning() {
     spc "$CASE_DIR/run$np.txt" $np -options_file input/block2d.opts -dm_plex_box_faces 4,4 -bc_0_values 2 -contact_values 1,4 -contact_obstacle_1_type plane -contact_obstacle_1_point -0.001,0 -contact_obstacle_1_normal 1,0 -load_steps 4 -load_min_increment 0.1 -output_dir "$CASE_DIR" -output_name run$np
     assert_eq "no warning at the start on $np rank(s)" "$(grep -c 'touch two obstacles' "$CASE_DIR/run$np.txt")" 0 || rc=1
     assert_eq "load 0.25 converged on $np rank(s)" "$(grep -c '^stopping: load factor 0.375 not reached: .*; last converged load factor 0.25$' "$CASE_DIR/run$np.txt")" 1 || rc=1
-    assert_ge "stalls naming the corner on $np rank(s)" "$(grep -c '^solve stalled: .*(an active-set cycle): 1 contact point(s) switched between two obstacles (e.g. obstacles 0 and 1); a point holds one obstacle at a time' "$CASE_DIR/run$np.txt")" 2 || rc=1
+    assert_ge "stalls naming the corner on $np rank(s)" "$(grep -c '^solve stalled: the active set changed in [0-9]* of those iterations: 1 contact point(s) switched between two obstacles (e.g. obstacles 0 and 1); a point holds one obstacle at a time' "$CASE_DIR/run$np.txt")" 2 || rc=1
   done
   return $rc
 }
