@@ -206,7 +206,7 @@ PETSC_EXTERN PetscErrorCode SPOptionsCheckNoGap(MPI_Comm, const char[], PetscInt
 /* app.c */
 PETSC_EXTERN PetscErrorCode SPAppCreate(MPI_Comm, SPApp *);
 PETSC_EXTERN PetscErrorCode SPAppSetUp(SPApp);
-PETSC_EXTERN PetscErrorCode SPAppRun(SPApp, PetscBool *, int *);
+PETSC_EXTERN PetscErrorCode SPAppRun(SPApp, int *);
 PETSC_EXTERN PetscErrorCode SPAppSummary(SPApp);
 PETSC_EXTERN PetscErrorCode SPAppDestroy(SPApp *);
 

@@ -37,7 +37,7 @@ static PetscErrorCode LoadingSetFromOptions(SPApp a)
   PetscCall(PetscOptionsInt("-load_max_cutbacks", "Budget of the run: total times a failing load increment may be halved before the run stops", "SPAppSetUp", a->maxCutbacks, &a->maxCutbacks, NULL));
   PetscCall(PetscOptionsInt("-load_grow_after", "After a cut-back, double the increment (up to 1/load_steps) after this many converged steps in a row (0: never)", "SPAppSetUp", a->growAfter, &a->growAfter, NULL));
   PetscCall(PetscOptionsReal("-load_min_increment", "Floor of the cut-back: the run stops rather than halve the load-factor increment below this", "SPAppSetUp", a->minIncrement, &a->minIncrement, &floorSet));
-  PetscCall(PetscOptionsReal("-max_wall_time", "Seconds: no new load step starts after this wall time; the run stops keeping its converged steps (status stopped, exit 2; -restart its .h5.part to go on; 0: no limit)", "SPAppSetUp", a->maxWallTime, &a->maxWallTime, NULL));
+  PetscCall(PetscOptionsReal("-max_wall_time", "Seconds: no new load step starts after this wall time; the run stops keeping its converged steps (status stopped, exit 3; -restart its .h5.part to go on; 0: no limit)", "SPAppSetUp", a->maxWallTime, &a->maxWallTime, NULL));
   PetscCall(PetscOptionsBool("-quiet", "No progress lines on stdout: neither the run line nor the lines per load step and per -progress_interval (the summary is still printed)", "SPAppSetUp", a->progress.quiet, &a->progress.quiet, NULL));
   PetscCall(PetscOptionsReal("-progress_interval", "Seconds: within a load step, a progress line per Newton iteration at most this often (0: every Newton iteration)", "SPAppSetUp", a->progress.interval, &a->progress.interval, NULL));
   PetscOptionsEnd();
@@ -127,7 +127,7 @@ PetscErrorCode SPAppSetUp(SPApp a)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* The run's status for the h5 and the exit code */
+/* The run's status for the h5 and the summary */
 static const char *RunStatus(SPApp a)
 {
   if (a->interrupted) return "interrupted";
@@ -135,7 +135,16 @@ static const char *RunStatus(SPApp a)
   return a->converged ? "complete" : "failed";
 }
 
-PetscErrorCode SPAppRun(SPApp a, PetscBool *converged, int *interrupted)
+/* The process's exit code for that status (README, Running): a batch script tells a planned stop
+   (-max_wall_time, a signal), which a restart continues, from a step that did not converge */
+static int ExitCode(SPApp a)
+{
+  if (a->interrupted) return 128 + a->interrupted;
+  if (a->wallStopped) return 3;
+  return a->converged ? 0 : 2;
+}
+
+PetscErrorCode SPAppRun(SPApp a, int *code)
 {
   PetscBool on;
 
@@ -155,8 +164,7 @@ PetscErrorCode SPAppRun(SPApp a, PetscBool *converged, int *interrupted)
   PetscCall(SPOutputClose(a->output, a->contact, RunStatus(a), a->stepsDone, a->loadReached));
   PetscCall(PetscLogStagePop());
   PetscCall(SPSignalsRestore(&a->signals));
-  *converged   = a->converged;
-  *interrupted = a->interrupted;
+  *code = ExitCode(a);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -174,7 +174,8 @@ static PetscErrorCode ReportUnusedOptions(void)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode Run(PetscBool *converged, int *interrupted)
+/* *code: the exit code (0 converged, 2 a step failed, 3 stopped by -max_wall_time, 128 + a signal) */
+static PetscErrorCode Run(int *code)
 {
   SPApp     app = NULL;
   PetscBool help;
@@ -184,11 +185,11 @@ static PetscErrorCode Run(PetscBool *converged, int *interrupted)
   PetscCall(SPAppSetUp(app));
   PetscCall(PetscOptionsHasHelp(NULL, &help));
   if (help) { /* -help lists the options of every module (set up above) and stops */
-    *converged = PETSC_TRUE;
+    *code = 0;
     PetscCall(SPAppDestroy(&app));
     PetscFunctionReturn(PETSC_SUCCESS);
   }
-  PetscCall(SPAppRun(app, converged, interrupted));
+  PetscCall(SPAppRun(app, code));
   PetscCall(SPAppSummary(app));
   PetscCall(SPAppDestroy(&app));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -197,15 +198,14 @@ static PetscErrorCode Run(PetscBool *converged, int *interrupted)
 int main(int argc, char **argv)
 {
   PetscErrorCode ierr;
-  PetscBool      converged = PETSC_FALSE;
-  int            interrupted = 0; /* the signal that stopped the run */
-  OneLineError   oneLine     = {"", 0};
+  int            code    = 2;
+  OneLineError   oneLine = {"", 0};
 
   if (SPCheckOptionsFiles(argc, argv)) return 1; /* before PetscInitialize reads them */
   SingletonMPI();
   PetscCall(PetscInitialize(&argc, &argv, NULL, help));
   PetscCall(PetscPushErrorHandler(ErrorHandler, &oneLine));
-  ierr = Run(&converged, &interrupted);
+  ierr = Run(&code);
   if (ierr == PETSC_ERR_FILE_WRITE) { /* an output write failed: its h5 cannot be closed, and */
     PetscMPIInt rank;                 /* HDF5 would crash closing it in MPI_Finalize (output-guard.c) */
     MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
@@ -216,13 +216,9 @@ int main(int argc, char **argv)
   if (OneLine(ierr)) return ReportOneLine(&oneLine); /* bad input: one line on stderr */
   if (ierr) PETSCABORT(PETSC_COMM_WORLD, ierr);
   PetscCall(ReportUnusedOptions());
-  if (interrupted) { /* SPLoadingRun printed how to restart */
-    PetscCall(PetscPopErrorHandler());
-    PetscCall(PetscFinalize());
-    return 128 + interrupted;
-  }
-  if (!converged) PetscCall(PetscPrintf(PETSC_COMM_WORLD, "spcontact: the run stopped before load factor 1 (the 'stopping:' line above says why); results above are for the last converged load step only\n"));
+  /* a signal or -max_wall_time: SPLoadingRun printed how to restart */
+  if (code == 2) PetscCall(PetscPrintf(PETSC_COMM_WORLD, "spcontact: the run stopped before load factor 1 (the 'stopping:' line above says why); results above are for the last converged load step only\n"));
   PetscCall(PetscPopErrorHandler());
   PetscCall(PetscFinalize());
-  return converged ? 0 : 2;
+  return code;
 }

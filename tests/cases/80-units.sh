@@ -235,13 +235,13 @@ test_units_chatter_hold_ranks() {
 }
 
 # Wall time: a limit already passed when the first load step would start stops the run there with
-# one line, exit 2, no step done, status stopped and a line on how to go on (no timing is asserted:
+# one line, exit 3 (a planned stop, not a failed step's 2), no step done, status stopped and a line on how to go on (no timing is asserted:
 # any setup takes longer than 1 microsecond)
 test_units_wall_time() {
   local out=$CASE_DIR/run.txt code rc=0
   spc "$out" 1 -options_file input/hertz2d.opts -output_dir "$CASE_DIR" -load_steps 3 -max_wall_time 1e-6; code=$?
   grep "^stopping" "$out"
-  assert_eq exit_code "$code" 2 || rc=1
+  assert_eq exit_code "$code" 3 || rc=1
   assert_eq load_steps "$(sval "$out" load_steps)" 0 || rc=1
   assert_eq stop_lines "$(grep -c '^stopping: load factor 0.333333 not reached: wall time .* s exceeds -max_wall_time 1e-06; last converged load factor 0' "$out")" 1 || rc=1
   # a planned stop, not a failure (QA helper 27: it said failed, and nothing about a restart)
@@ -250,7 +250,7 @@ test_units_wall_time() {
   # a restarted run stopped before a step of its own points back to the file it restarted from
   spc "$CASE_DIR/a.txt" 1 -options_file input/hertz2d.opts -output_dir "$CASE_DIR" -output_name a -load_steps 3 -debug_interrupt_after_step 1
   spc "$CASE_DIR/b.txt" 1 -options_file input/hertz2d.opts -output_dir "$CASE_DIR" -output_name b -load_steps 3 -restart "$CASE_DIR/a.h5.part" -max_wall_time 1e-6; code=$?
-  assert_eq restarted_exit_code "$code" 2 || rc=1
+  assert_eq restarted_exit_code "$code" 3 || rc=1
   assert_eq restarted_status "$(sval "$CASE_DIR/b.txt" status)" stopped || rc=1
   assert_eq restarted_hint "$(grep -c "^spcontact: stopped by -max_wall_time before a load step converged after the restart (load step 1, load factor 0.333333); restart with -restart $CASE_DIR/a.h5.part again" "$CASE_DIR/b.txt")" 1 || rc=1
   return $rc
