@@ -336,8 +336,11 @@ PetscErrorCode SPMeshCreate(MPI_Comm comm, DM *dm)
   PetscCall(PetscOptionsString("-mesh_file", "gmsh .msh file; without it a PETSc box mesh is built from -dm_plex_box_* options", "SPMeshCreate", file, file, sizeof(file), NULL));
   PetscCall(PetscOptionsString("-mesh_partitioner", "Partitioner: metis (METIS 5 k-way, default), ptscotch, simple", "SPMeshCreate", partitioner, partitioner, sizeof(partitioner), NULL));
   PetscOptionsEnd();
-  if (file[0]) PetscCall(ReadMesh(comm, file, dm));
-  else {
+  if (file[0]) {
+    PetscCall(ReadMesh(comm, file, dm));
+    PetscCall(SPMeshCheckSize(comm, *dm));
+  } else {
+    PetscCall(SPMeshCheckSize(comm, NULL));
     /* Debian's PETSc has no simplex generator: default the box to tensor cells (Q1) */
     PetscCall(SPOptionsSetDefault("-dm_plex_simplex", "0"));
     PetscCall(DMCreate(comm, dm));

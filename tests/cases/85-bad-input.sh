@@ -159,6 +159,19 @@ inverted cells (box bounds reversed)|input/block2d.opts|-dm_plex_box_lower 1,0 -
 flat cells (zero box width)|input/block2d.opts|-dm_plex_box_upper 0,1
 inverted hexahedra (3D box bounds reversed)|input/block3d.opts|-dm_plex_box_lower 1,0,0 -dm_plex_box_upper 0,1,1
 flat hexahedra (zero box height)|input/block3d.opts|-dm_plex_box_upper 1,1,0
+box with a zero face count (was a PETSc error wall in the cell geometry)|input/block2d.opts|-dm_plex_box_faces 0,4
+box with a negative face count|input/block3d.opts|-dm_plex_box_faces 4,-1,4
+2D box with one face count (silently a 4 x 2 box)|input/block2d.opts|-dm_plex_box_faces 4
+2D box with three face counts (silently ignored)|input/block2d.opts|-dm_plex_box_faces 4,4,4
+3D box with two face counts|input/block3d.opts|-dm_plex_box_faces 4,4
+box lower corner of one coordinate (was a PETSc error wall)|input/block2d.opts|-dm_plex_box_lower 0
+box upper corner of three coordinates in 2D|input/block2d.opts|-dm_plex_box_upper 1,1,1
+box of dimension 1|input/block2d.opts|-dm_plex_dim 1
+box of dimension 4 (was PETSc's "Dimension 4 should be in [1, 3]")|input/block2d.opts|-dm_plex_dim 4
+negative refinement (PETSc's line did not name the option)|input/block2d.opts|-dm_refine -1
+refinement beyond 32-bit indices (ran until the memory was gone)|input/block2d.opts|-dm_refine 20
+refinement beyond the memory (512 GiB at 1 KiB per dof, the least)|input/block2d.opts|-dm_refine 11
+a mesh file refined beyond the indices|input/hertz2d.opts|-dm_refine 12
 manufactured solution with contact|input/hertz2d.opts|-material_mms 0.01
 augmentation budget zero|input/hertz2d.opts|-contact_method alm -contact_alm_max 0
 unknown Krylov method (PETSc option misspelt)|input/hertz2d.opts|-ksp_type nonsense
