@@ -48,8 +48,10 @@ static PetscErrorCode BCSetFromOptions(MPI_Comm comm, PetscInt i, PetscInt dim, 
   PetscCheck(!gradSet || ngrad == dim, comm, PETSC_ERR_USER_INPUT, "-%sgradient: give %" PetscInt_FMT " components (one per coordinate), got %" PetscInt_FMT, prefix, dim, ngrad);
   PetscCheck(!rampSet || (nramp == 2 && bc->ramp[0] >= 0.0 && bc->ramp[1] > bc->ramp[0] && bc->ramp[1] <= 1.0), comm, PETSC_ERR_USER_INPUT, "-%sramp: give two load factors 0 <= a < b <= 1", prefix);
   PetscCheck(bc->nvalues > 0, comm, PETSC_ERR_USER_INPUT, "-%svalues: give the label values of boundary condition %" PetscInt_FMT, prefix, i);
-  for (PetscInt k = 0; k < bc->ncomps; ++k)
+  for (PetscInt k = 0; k < bc->ncomps; ++k) {
     PetscCheck(bc->comps[k] >= 0 && bc->comps[k] < dim, comm, PETSC_ERR_USER_INPUT, "-%scomponents: component %" PetscInt_FMT " out of range [0, %" PetscInt_FMT ")", prefix, bc->comps[k], dim);
+    for (PetscInt j = 0; j < k; ++j) PetscCheck(bc->comps[j] != bc->comps[k], comm, PETSC_ERR_USER_INPUT, "-%scomponents: component %" PetscInt_FMT " is given twice (one of its two values would be lost); give each component once", prefix, bc->comps[k]);
+  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

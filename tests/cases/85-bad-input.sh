@@ -159,6 +159,7 @@ inverted cells (box bounds reversed)|input/block2d.opts|-dm_plex_box_lower 1,0 -
 flat cells (zero box width)|input/block2d.opts|-dm_plex_box_upper 0,1
 inverted hexahedra (3D box bounds reversed)|input/block3d.opts|-dm_plex_box_lower 1,0,0 -dm_plex_box_upper 0,1,1
 flat hexahedra (zero box height)|input/block3d.opts|-dm_plex_box_upper 1,1,0
+Dirichlet component given twice (the second value silently won)|input/block2d.opts|-bc_0_components 0,0 -bc_0_value 0,0.001
 box with a zero face count (was a PETSc error wall in the cell geometry)|input/block2d.opts|-dm_plex_box_faces 0,4
 box with a negative face count|input/block3d.opts|-dm_plex_box_faces 4,-1,4
 2D box with one face count (silently a 4 x 2 box)|input/block2d.opts|-dm_plex_box_faces 4
