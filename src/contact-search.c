@@ -104,6 +104,44 @@ PetscErrorCode SPContactWarnCorners(SPContact c)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Collective, at the set-up: a warning where a slave vertex starts inside a rigid obstacle by more
+   than its facet size h. An overlap of a few elements is no contact to resolve but an obstacle
+   placed wrongly: its point or normal's sign, or a mesh in other units than the options (a mesh in
+   mm against a plane at y = -0.001 in m). The solve would push the body out without a word. The
+   obstacles at their start positions (load factor 0: no motion yet); pairs are not checked. */
+PetscErrorCode SPContactWarnDeepStart(SPContact c)
+{
+  MPI_Comm comm = PetscObjectComm((PetscObject)c->dm);
+  PetscInt n = 0;
+  struct {
+    double ratio;
+    int    obstacle;
+  } deep = {0.0, -1};
+  double depth = 0.0;
+
+  PetscFunctionBeginUser;
+  if (!c->enabled || !c->nob) PetscFunctionReturn(PETSC_SUCCESS);
+  for (PetscInt i = 0; i < c->n; ++i) {
+    PetscBool in = PETSC_FALSE;
+    if (!c->pt[i].onObstacle) continue;
+    for (PetscInt j = 0; j < c->nob; ++j) {
+      PetscReal g, nj[3], Hj[9];
+      SPObstacleGap(&c->ob[j], c->dim, 0.0, c->pt[i].X, &g, nj, Hj);
+      if (g >= -c->pt[i].h) continue;
+      in = PETSC_TRUE;
+      depth = PetscMax(depth, (double)-g);
+      if (-g / c->pt[i].h > deep.ratio) deep.ratio = (double)(-g / c->pt[i].h), deep.obstacle = (int)j;
+    }
+    n += in;
+  }
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &n, 1, MPIU_INT, MPI_SUM, comm));
+  if (!n) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &deep, 1, MPI_DOUBLE_INT, MPI_MAXLOC, comm));
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &depth, 1, MPI_DOUBLE, MPI_MAX, comm));
+  PetscCall(PetscFPrintf(comm, PETSC_STDERR, "spcontact: warning: %" PetscInt_FMT " contact point(s) start inside an obstacle by more than their facet size (up to %.3g, %.3g facet sizes, obstacle %d): check -contact_obstacle_%d_point and _normal (a sign, or the mesh's units); the solve pushes them out to its surface\n", n, depth, deep.ratio, deep.obstacle, deep.obstacle));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* Collective: the points that switched between two rigid obstacles at least twice in this Newton
    solve (*n; pair: two such obstacles), the cause of an active-set cycle at a corner that reached
    a second obstacle during the run (SPContactWarnCorners sees only those touching at the start) */

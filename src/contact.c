@@ -315,6 +315,7 @@ PetscErrorCode SPContactSetUp(SPContact c)
   PetscCall(SPContactComputeAreas(c));
   PetscCall(SPContactSetGapTolerance(c));
   PetscCall(SPContactWarnCorners(c));
+  PetscCall(SPContactWarnDeepStart(c));
   PetscCall(DMCreateGlobalVector(c->dm, &c->Fc));
   PetscCall(VecCreateMPI(comm, c->n * c->dim, PETSC_DETERMINE, &c->fvec));
   PetscCall(VecSetOption(c->fvec, VEC_IGNORE_NEGATIVE_INDICES, PETSC_TRUE));

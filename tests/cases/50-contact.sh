@@ -509,6 +509,28 @@ test_contact_corner_two_obstacles_warning() {
   return $rc
 }
 
+# A body that starts deep inside an obstacle (QA, 2026-12-02): B1 with its plane at y = 10 instead of
+# 0 (a sign or units slip) converged without a word, the block pushed up by 10. Now one warning
+# names the count (the 5 bottom vertices of the 4 x 4 mesh), the depth (10, 40 facet sizes of
+# 0.25) and the obstacle, on 1 and 3 ranks; the solve still pushes the block out (the same contact
+# force as B1 to 1e-8); B1 itself and a start overlap of 0.8 h get no such warning.
+test_contact_deep_start_warning() {
+  local rc=0 np
+  spc "$CASE_DIR/b1.txt" 1 -options_file input/block2d.opts -dm_plex_box_faces 4,4 -output_dir "$CASE_DIR" -output_name b1 || rc=1
+  assert_eq "no warning on B1" "$(grep -c 'start inside an obstacle' "$CASE_DIR/b1.txt")" 0 || rc=1
+  for np in 1 3; do
+    spc "$CASE_DIR/in$np.txt" $np -options_file input/block2d.opts -dm_plex_box_faces 4,4 -contact_obstacle_0_point 0,10 -output_dir "$CASE_DIR" -output_name in$np || rc=1
+    assert_eq "one warning on $np rank(s)" "$(grep -c '^spcontact: warning: 5 contact point(s) start inside an obstacle by more than their facet size (up to 10, 40 facet sizes, obstacle 0): check -contact_obstacle_0_point and _normal' "$CASE_DIR/in$np.txt")" 1 || rc=1
+    assert_close "force as B1's on $np rank(s)" "$(sval "$CASE_DIR/in$np.txt" contact_force_y)" "$(sval "$CASE_DIR/b1.txt" contact_force_y)" 1e-8 || rc=1
+  done
+  # the bound is one facet size: a start overlap of 0.8 h passes, 1.2 h is named
+  spc "$CASE_DIR/h08.txt" 1 -options_file input/block2d.opts -dm_plex_box_faces 4,4 -contact_obstacle_0_point 0,0.2 -output_dir "$CASE_DIR" -output_name h08 || rc=1
+  assert_eq "no warning at 0.8 h" "$(grep -c 'start inside an obstacle' "$CASE_DIR/h08.txt")" 0 || rc=1
+  spc "$CASE_DIR/h12.txt" 1 -options_file input/block2d.opts -dm_plex_box_faces 4,4 -contact_obstacle_0_point 0,0.3 -output_dir "$CASE_DIR" -output_name h12 || rc=1
+  assert_eq "a warning at 1.2 h" "$(grep -c 'start inside an obstacle by more than their facet size (up to 0.3, 1.2 facet sizes' "$CASE_DIR/h12.txt")" 1 || rc=1
+  return $rc
+}
+
 # A contact point that a Dirichlet condition fixes along the obstacle's normal (QA helper 27): a
 # rigid plate pushed 0.01 onto a block clamped on its left face, so the clamped corner (0, 1) is
 # under the plate and cannot move. It is left out of the contact with one warning (its gap is
