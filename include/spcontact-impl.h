@@ -367,6 +367,7 @@ PETSC_EXTERN PetscErrorCode SPContactEvaluate(SPContact, Vec);
 PETSC_EXTERN PetscErrorCode SPContactSearch(SPContact, const PetscScalar[], PetscReal);
 PETSC_EXTERN PetscErrorCode SPContactWarnCorners(SPContact);
 PETSC_EXTERN PetscErrorCode SPContactWarnDeepStart(SPContact);
+PETSC_EXTERN PetscErrorCode SPContactWarnDeepPairs(SPContact);
 /* the cure for a point on two rigid obstacles (one held at a time), in the start warning and the stall line */
 #define SP_CORNER_ADVICE "a point holds one obstacle at a time (README, Known limits): round or chamfer the corner, or give one of the two a Dirichlet condition instead of an obstacle where the body stays on it"
 PETSC_EXTERN PetscErrorCode SPContactWarnPinned(SPContact);

@@ -258,8 +258,10 @@ PetscErrorCode SPContactEvaluate(SPContact c, Vec X)
     if (c->friction) DropHeldDirection(c->dim, c->pt[i].sdof, c->pt[i].geo.normal, c->pt[i].geo.tangent);
     SPFrictionKinematics(c, i);
   }
-  if (c->evaluations == 1)
+  if (c->evaluations == 1) {
     for (PetscInt i = 0; i < c->n; ++i) c->pt[i].gap0 = c->pt[i].geo.gap;
+    PetscCall(SPContactWarnDeepPairs(c));
+  }
   PetscCall(PetscLogEventEnd(c->searchEvent, 0, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -104,41 +104,76 @@ PetscErrorCode SPContactWarnCorners(SPContact c)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Points that start inside an obstacle or a pair's master surface by more than their facet size h:
+   their count, the largest depth, and the largest depth over h with its obstacle or pair */
+typedef struct {
+  PetscInt n;
+  double   depth;
+  struct {
+    double ratio;
+    int    which;
+  } deep;
+} SPDeepTally;
+
+static void TallyDeep(SPDeepTally *t, PetscReal g, PetscReal h, PetscInt which)
+{
+  t->n++;
+  t->depth = PetscMax(t->depth, (double)-g);
+  if (-g / h > t->deep.ratio) t->deep.ratio = (double)(-g / h), t->deep.which = (int)which;
+}
+
+/* Collective: one warning line for a tally (inside "an obstacle", named "obstacle" k; the options to check) */
+static PetscErrorCode WarnDeep(MPI_Comm comm, SPDeepTally *t, const char inside[], const char noun[], const char check[])
+{
+  char advice[256];
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &t->n, 1, MPIU_INT, MPI_SUM, comm));
+  if (!t->n) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &t->deep, 1, MPI_DOUBLE_INT, MPI_MAXLOC, comm));
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &t->depth, 1, MPI_DOUBLE, MPI_MAX, comm));
+  PetscCall(PetscSNPrintf(advice, sizeof(advice), check, t->deep.which, t->deep.which));
+  PetscCall(PetscFPrintf(comm, PETSC_STDERR, "spcontact: warning: %" PetscInt_FMT " contact point(s) start inside %s by more than their facet size (up to %.3g, %.3g facet sizes, %s %d): check %s; the solve will try to push them out to the surface\n", t->n, inside, t->depth, t->deep.ratio, noun, t->deep.which, advice));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* Collective, at the set-up: a warning where a slave vertex starts inside a rigid obstacle by more
    than its facet size h. An overlap of a few elements is no contact to resolve but an obstacle
    placed wrongly: its point or normal's sign, or a mesh in other units than the options (a mesh in
    mm against a plane at y = -0.001 in m). The solve would push the body out without a word. The
-   obstacles at their start positions (load factor 0: no motion yet); pairs are not checked. */
+   obstacles at their start positions (load factor 0: no motion yet). */
 PetscErrorCode SPContactWarnDeepStart(SPContact c)
 {
-  MPI_Comm comm = PetscObjectComm((PetscObject)c->dm);
-  PetscInt n = 0;
-  struct {
-    double ratio;
-    int    obstacle;
-  } deep = {0.0, -1};
-  double depth = 0.0;
+  SPDeepTally t = {0, 0.0, {0.0, -1}};
 
   PetscFunctionBeginUser;
   if (!c->enabled || !c->nob) PetscFunctionReturn(PETSC_SUCCESS);
   for (PetscInt i = 0; i < c->n; ++i) {
-    PetscBool in = PETSC_FALSE;
+    PetscReal g = 0.0, gj, nj[3], Hj[9];
+    PetscInt  k = -1;
     if (!c->pt[i].onObstacle) continue;
     for (PetscInt j = 0; j < c->nob; ++j) {
-      PetscReal g, nj[3], Hj[9];
-      SPObstacleGap(&c->ob[j], c->dim, 0.0, c->pt[i].X, &g, nj, Hj);
-      if (g >= -c->pt[i].h) continue;
-      in = PETSC_TRUE;
-      depth = PetscMax(depth, (double)-g);
-      if (-g / c->pt[i].h > deep.ratio) deep.ratio = (double)(-g / c->pt[i].h), deep.obstacle = (int)j;
+      SPObstacleGap(&c->ob[j], c->dim, 0.0, c->pt[i].X, &gj, nj, Hj);
+      if (gj < g) g = gj, k = j;
     }
-    n += in;
+    if (g < -c->pt[i].h) TallyDeep(&t, g, c->pt[i].h, k);
   }
-  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &n, 1, MPIU_INT, MPI_SUM, comm));
-  if (!n) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &deep, 1, MPI_DOUBLE_INT, MPI_MAXLOC, comm));
-  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &depth, 1, MPI_DOUBLE, MPI_MAX, comm));
-  PetscCall(PetscFPrintf(comm, PETSC_STDERR, "spcontact: warning: %" PetscInt_FMT " contact point(s) start inside an obstacle by more than their facet size (up to %.3g, %.3g facet sizes, obstacle %d): check -contact_obstacle_%d_point and _normal (a sign, or the mesh's units); the solve pushes them out to its surface\n", n, depth, deep.ratio, deep.obstacle, deep.obstacle));
+  PetscCall(WarnDeep(PetscObjectComm((PetscObject)c->dm), &t, "an obstacle", "obstacle", "-contact_obstacle_%d_point and _normal (a sign, or the mesh's units)"));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Collective, after the run's first search: the same for the points of pairs, inside their master
+   surface by more than h (a slave or master label value that names another surface, or two
+   bodies' meshes placed over each other) */
+PetscErrorCode SPContactWarnDeepPairs(SPContact c)
+{
+  SPDeepTally t = {0, 0.0, {0.0, -1}};
+
+  PetscFunctionBeginUser;
+  if (!c->enabled || !c->npair) PetscFunctionReturn(PETSC_SUCCESS);
+  for (PetscInt i = 0; i < c->n; ++i)
+    if (c->pt[i].geo.elem >= 0 && c->pt[i].geo.gap < -c->pt[i].h) TallyDeep(&t, c->pt[i].geo.gap, c->pt[i].h, c->mf[c->pt[i].geo.elem].pair);
+  PetscCall(WarnDeep(PetscObjectComm((PetscObject)c->dm), &t, "a master surface", "pair", "-contact_pair_%d_slave_values and -contact_pair_%d_master_values, and where the bodies' meshes lie"));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -513,7 +513,8 @@ test_contact_corner_two_obstacles_warning() {
 # 0 (a sign or units slip) converged without a word, the block pushed up by 10. Now one warning
 # names the count (the 5 bottom vertices of the 4 x 4 mesh), the depth (10, 40 facet sizes of
 # 0.25) and the obstacle, on 1 and 3 ranks; the solve still pushes the block out (the same contact
-# force as B1 to 1e-8); B1 itself and a start overlap of 0.8 h get no such warning.
+# force as B1 to 1e-8); B1 itself and a start overlap of 0.8 h get no such warning. The same for
+# the points of pairs.
 test_contact_deep_start_warning() {
   local rc=0 np
   spc "$CASE_DIR/b1.txt" 1 -options_file input/block2d.opts -dm_plex_box_faces 4,4 -output_dir "$CASE_DIR" -output_name b1 || rc=1
@@ -528,6 +529,15 @@ test_contact_deep_start_warning() {
   assert_eq "no warning at 0.8 h" "$(grep -c 'start inside an obstacle' "$CASE_DIR/h08.txt")" 0 || rc=1
   spc "$CASE_DIR/h12.txt" 1 -options_file input/block2d.opts -dm_plex_box_faces 4,4 -contact_obstacle_0_point 0,0.3 -output_dir "$CASE_DIR" -output_name h12 || rc=1
   assert_eq "a warning at 1.2 h" "$(grep -c 'start inside an obstacle by more than their facet size (up to 0.3, 1.2 facet sizes' "$CASE_DIR/h12.txt")" 1 || rc=1
+  # pairs, after the first search: B5 with the lower block's bottom (value 1) as the slave, 0.5
+  # below its master (the same block's top): 440 Newton iterations to exit 2 without a word on
+  # the cause before; now the warning, on 1 and 2 ranks (one cut-back here keeps the failure short)
+  for np in 1 2; do
+    spc "$CASE_DIR/pair$np.txt" $np -options_file input/patch_4_5.opts -contact_pair_0_slave_values 1 -load_max_cutbacks 1 -output_dir "$CASE_DIR" -output_name pair$np
+    assert_eq "pair warning on $np rank(s)" "$(grep -c '^spcontact: warning: 5 contact point(s) start inside a master surface by more than their facet size (up to 0.5, 2 facet sizes, pair 0): check -contact_pair_0_slave_values and -contact_pair_0_master_values' "$CASE_DIR/pair$np.txt")" 1 || rc=1
+  done
+  spc "$CASE_DIR/b5.txt" 1 -options_file input/patch_4_5.opts -output_dir "$CASE_DIR" -output_name b5 || rc=1
+  assert_eq "no warning on B5" "$(grep -c 'start inside' "$CASE_DIR/b5.txt")" 0 || rc=1
   return $rc
 }
 
