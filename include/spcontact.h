@@ -42,6 +42,7 @@ PETSC_EXTERN PetscErrorCode SPProgressIteration(SPProgress *, MPI_Comm, PetscInt
 /* mesh.c, partition-metis.c */
 PETSC_EXTERN PetscErrorCode SPMeshCreate(MPI_Comm, DM *);
 PETSC_EXTERN PetscErrorCode SPMeshCheckSize(MPI_Comm, DM);
+PETSC_EXTERN PetscErrorCode SPOptionsCheckLength(MPI_Comm, const char[], const char[], PetscInt);
 PETSC_EXTERN PetscErrorCode SPMeshGetSerialNumbers(DM, const PetscInt **);
 PETSC_EXTERN PetscErrorCode SPMeshCheckLabel(DM, const char[], PetscInt, const PetscInt[], const char[]);
 PETSC_EXTERN PetscErrorCode SPPartitionerSetMetis(DM);

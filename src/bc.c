@@ -36,6 +36,11 @@ static PetscErrorCode BCSetFromOptions(MPI_Comm comm, PetscInt i, PetscInt dim, 
   nramp = 2;
   PetscCall(PetscOptionsRealArray("-ramp", "Load curve a,b: the condition is off up to load factor a, full from b, linear between (0,1: proportional to the load factor; e.g. a normal phase, then a tangential one)", "SPBCSetFromOptions", bc->ramp, &nramp, &rampSet));
   PetscOptionsEnd();
+  {
+    const char *const name[] = {"-values", "-components", "-value", "-gradient", "-ramp"};
+    const PetscInt    cap[]  = {SP_MAX_VALUES, 3, 3, 3, 2};
+    for (PetscInt k = 0; k < 5; ++k) PetscCall(SPOptionsCheckLength(comm, prefix, name[k], cap[k]));
+  }
   if (!given) PetscFunctionReturn(PETSC_SUCCESS);
   bc->type = (SPBCType)type;
   {

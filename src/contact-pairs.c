@@ -58,6 +58,8 @@ static PetscErrorCode PairSetFromOptions(MPI_Comm comm, PetscInt k, PetscReal mu
   PetscCall(PetscOptionsIntArray("-master_values", "Label values of the master surface (its facets are projected on)", "SPContactPairsSetFromOptions", p->master, &p->nmaster, &hasM));
   PetscCall(PetscOptionsReal("-mu", "Coulomb friction coefficient of the pair (default -contact_friction_mu)", "SPContactPairsSetFromOptions", p->mu, &p->mu, NULL));
   PetscOptionsEnd();
+  PetscCall(SPOptionsCheckLength(comm, prefix, "-slave_values", SP_MAX_VALUES));
+  PetscCall(SPOptionsCheckLength(comm, prefix, "-master_values", SP_MAX_VALUES));
   PetscCall(SPContactCheckMu(comm, prefix, p->mu));
   if (!hasS) p->nslave = 0;
   if (!hasM) p->nmaster = 0;

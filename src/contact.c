@@ -87,16 +87,19 @@ static PetscErrorCode ObstacleSetFromOptions(MPI_Comm comm, PetscInt i, PetscInt
   PetscCall(PetscOptionsEList("-type", "Obstacle: plane (point, normal), sphere (centre=point, radius; a circle in 2D), cylinder (point on axis, axis=normal, radius)", "SPContactSetFromOptions", ObstacleTypes, 3, ObstacleTypes[0], &type, NULL));
   n = 3;
   PetscCall(PetscOptionsRealArray("-point", "Plane point, or sphere/cylinder centre (required)", "SPContactSetFromOptions", ob->point, &n, &setP));
+  PetscCall(SPOptionsCheckLength(comm, prefix, "-point", 3));
   PetscCall(CheckVector(comm, prefix, "point", dim, setP, n, ob->point));
   n = 3;
   if (type == SP_OBSTACLE_PLANE || (type == SP_OBSTACLE_CYLINDER && dim == 3)) { /* a sphere, and a cylinder in 2D (a circle), have none: a -normal given is then reported unused */
     PetscCall(PetscOptionsRealArray("-normal", "Plane normal (towards the body) or cylinder axis (3D; a cylinder in 2D is a circle) (required)", "SPContactSetFromOptions", ob->normal, &n, &setN));
+    PetscCall(SPOptionsCheckLength(comm, prefix, "-normal", 3));
     PetscCall(CheckVector(comm, prefix, "normal", dim, setN, n, ob->normal));
   }
   if (type != SP_OBSTACLE_PLANE || PetscOptionsObject->printhelp) /* a plane has none: reported unused */
     PetscCall(SPOptionsRealComputed(PetscOptionsObject, "-radius", "Sphere/cylinder radius > 0", "SPContactSetFromOptions", "none: give it", &ob->radius, &setR));
   n = 3;
   PetscCall(PetscOptionsRealArray("-motion", "Rigid displacement of the obstacle at load factor 1", "SPContactSetFromOptions", ob->motion, &n, &set));
+  PetscCall(SPOptionsCheckLength(comm, prefix, "-motion", 3));
   PetscCall(CheckVector(comm, prefix, "motion", dim, set, n, ob->motion));
   PetscCall(PetscOptionsReal("-mu", "Coulomb friction coefficient against this obstacle (default -contact_friction_mu)", "SPContactSetFromOptions", *mu, mu, NULL));
   help = PetscOptionsObject->printhelp;
@@ -229,6 +232,7 @@ PetscErrorCode SPContactSetFromOptions(SPContact c)
   PetscCall(MethodSetFromOptions(PetscOptionsObject, c));
   PetscCall(PetscOptionsString("-contact_label", "Mesh label of the slave boundary", "SPContactSetFromOptions", c->label, c->label, sizeof(c->label), NULL));
   PetscCall(PetscOptionsIntArray("-contact_values", "Label values of the slave boundary", "SPContactSetFromOptions", c->values, &c->nvalues, &setValues));
+  PetscCall(SPOptionsCheckLength(comm, NULL, "-contact_values", SP_MAX_VALUES));
   PetscCall(SPOptionsRealComputed(PetscOptionsObject, "-contact_penalty", "Absolute penalty eps per unit area (stress/length); default: alpha E / h at each point", "SPContactSetFromOptions", "alpha E / h", &c->penalty, &setPenalty));
   PetscCall(PetscOptionsReal("-contact_alpha", "Penalty factor: eps = alpha E / h, h the mean slave facet size at the point", "SPContactSetFromOptions", c->alpha, &c->alpha, NULL));
   PetscCall(SPFrictionSetFromOptions(PetscOptionsObject, c)); /* after -contact_alpha: the default of -contact_friction_alpha */

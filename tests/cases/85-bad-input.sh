@@ -160,6 +160,9 @@ flat cells (zero box width)|input/block2d.opts|-dm_plex_box_upper 0,1
 inverted hexahedra (3D box bounds reversed)|input/block3d.opts|-dm_plex_box_lower 1,0,0 -dm_plex_box_upper 0,1,1
 flat hexahedra (zero box height)|input/block3d.opts|-dm_plex_box_upper 1,1,0
 Dirichlet component given twice (the second value silently won)|input/block2d.opts|-bc_0_components 0,0 -bc_0_value 0,0.001
+load curve of three values (ran as its first two)|input/friction_block2d.opts|-bc_1_ramp 0,1,2
+3D obstacle point of four values (ran as its first three)|input/block3d.opts|-contact_obstacle_0_point 0,0,0,5
+contact values beyond the 16 read|input/block2d.opts|-contact_values 1,2,3,4,5,6,7,8,9,10,11,12,13,14,15,16,17
 box with a zero face count (was a PETSc error wall in the cell geometry)|input/block2d.opts|-dm_plex_box_faces 0,4
 box with a negative face count|input/block3d.opts|-dm_plex_box_faces 4,-1,4
 2D box with one face count (silently a 4 x 2 box)|input/block2d.opts|-dm_plex_box_faces 4
