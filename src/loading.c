@@ -84,7 +84,7 @@ static PetscErrorCode Interrupted(SPApp app, PetscBool *stop)
   if (!*stop) PetscFunctionReturn(PETSC_SUCCESS);
   app->converged = PETSC_FALSE;
   PetscCall(SPOutputGetPrefix(app->output, &prefix));
-  if (app->output->enabled) PetscCall(PetscPrintf(app->comm, "spcontact: interrupted by signal %d after load step %" PetscInt_FMT " (load factor %g); restart with -restart %s.h5.part\n", app->interrupted, app->stepsDone, (double)app->loadReached, prefix));
+  if (app->output->enabled) PetscCall(PetscPrintf(app->comm, "spcontact: interrupted by signal %d after load step %" PetscInt_FMT " (load factor %g); restart with -restart %s.h5.part and another -output_name\n", app->interrupted, app->stepsDone, (double)app->loadReached, prefix));
   else PetscCall(PetscPrintf(app->comm, "spcontact: interrupted by signal %d after load step %" PetscInt_FMT " (load factor %g); no restart data (-output_fields false)\n", app->interrupted, app->stepsDone, (double)app->loadReached));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -99,7 +99,7 @@ static PetscErrorCode WallTimeHint(SPApp app, PetscInt step0, PetscInt step, Pet
   PetscCall(SPOutputGetPrefix(app->output, &prefix));
   if (step == 0) PetscCall(PetscPrintf(app->comm, "spcontact: stopped by -max_wall_time before any load step converged: nothing to restart from; raise -max_wall_time\n"));
   else if (step == step0) PetscCall(PetscPrintf(app->comm, "spcontact: stopped by -max_wall_time before a load step converged after the restart (load step %" PetscInt_FMT ", load factor %g); restart with -restart %s again, with a larger -max_wall_time\n", step, (double)done, app->restartFile));
-  else if (app->output->enabled) PetscCall(PetscPrintf(app->comm, "spcontact: stopped by -max_wall_time after load step %" PetscInt_FMT " (load factor %g); restart with -restart %s.h5.part\n", step, (double)done, prefix));
+  else if (app->output->enabled) PetscCall(PetscPrintf(app->comm, "spcontact: stopped by -max_wall_time after load step %" PetscInt_FMT " (load factor %g); restart with -restart %s.h5.part and another -output_name\n", step, (double)done, prefix));
   else PetscCall(PetscPrintf(app->comm, "spcontact: stopped by -max_wall_time after load step %" PetscInt_FMT " (load factor %g); no restart data (-output_fields false)\n", step, (double)done));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
