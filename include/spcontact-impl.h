@@ -508,6 +508,8 @@ PETSC_EXTERN PetscErrorCode SPSolverIsDirect(SPSolver, PetscBool *);
 PETSC_EXTERN PetscErrorCode SPSolverSetUpPCLag(SPSolver);
 PETSC_EXTERN PetscErrorCode SPSolverPCLagJacobian(SPSolver);
 PETSC_EXTERN PetscErrorCode SPSolverPCLagSolved(SPSolver);
+PETSC_EXTERN PetscErrorCode SPSolverConverged(SNES, PetscInt, PetscReal, PetscReal, PetscReal, SNESConvergedReason *, void *); /* solver-converged.c */
+PETSC_EXTERN PetscErrorCode SPSolverRecordSolveGap(SPSolver, SNESConvergedReason);
 
 struct _n_SPOutput {
   DM          dm;  /* not owned */
