@@ -54,8 +54,9 @@ static PetscErrorCode JobMemory(MPI_Comm comm, PetscReal *bytes)
 
 /* The uniform refinements (-dm_refine, -dm_refine_pre) of a mesh of cells0 cells: each one
    multiplies the cells by 2^dim. Refused where the refined mesh's points (about 2^dim per cell)
-   would overflow PETSc's indices, or where its dofs could not fit in the job's memory. */
-static PetscErrorCode CheckRefinement(MPI_Comm comm, PetscInt dim, PetscReal cells0)
+   would overflow PETSc's indices, or where its dofs (dim per vertex; a vertex per quadrilateral or
+   hexahedron, per 2 triangles, per 6 tetrahedra) could not fit in the job's memory. */
+static PetscErrorCode CheckRefinement(MPI_Comm comm, PetscInt dim, PetscBool simplex, PetscReal cells0)
 {
   const char *const name[] = {"-dm_refine", "-dm_refine_pre"};
   PetscInt          r[2] = {0, 0};
@@ -69,7 +70,7 @@ static PetscErrorCode CheckRefinement(MPI_Comm comm, PetscInt dim, PetscReal cel
   if (!r[0] && !r[1]) PetscFunctionReturn(PETSC_SUCCESS);
   cells = cells0 * PetscPowReal(2.0, (PetscReal)(dim * (r[0] + r[1])));
   PetscCheck(cells * PetscPowReal(2.0, (PetscReal)dim) < (PetscReal)PETSC_MAX_INT, comm, PETSC_ERR_USER_INPUT, "%s %" PetscInt_FMT ": the refined mesh would have about %.3g cells, beyond the %d-bit indices of this PETSc build (%.3g mesh points); give fewer refinements", r[0] ? name[0] : name[1], r[0] ? r[0] : r[1], (double)cells, (int)(8 * sizeof(PetscInt)), (double)PETSC_MAX_INT);
-  dofs = dim * cells;
+  dofs = dim * cells / (simplex ? (dim == 3 ? 6.0 : 2.0) : 1.0);
   need = SP_MIN_BYTES_PER_DOF * dofs;
   PetscCall(JobMemory(comm, &have));
   PetscCheck(have <= 0.0 || need <= have, comm, PETSC_ERR_USER_INPUT, "%s %" PetscInt_FMT ": the refined mesh would have about %.3g cells and %.3g dofs, which need at least %.3g GiB (1 KiB per dof) against the %.3g GiB of memory of this job's nodes; give fewer refinements or more nodes", r[0] ? name[0] : name[1], r[0] ? r[0] : r[1], (double)cells, (double)dofs, (double)(need / 1073741824.0), (double)(have / 1073741824.0));
@@ -86,6 +87,7 @@ PetscErrorCode SPMeshCheckSize(MPI_Comm comm, DM dm)
   PetscFunctionBeginUser;
   if (dm) {
     PetscCall(DMGetDimension(dm, &dim));
+    PetscCall(DMPlexIsSimplex(dm, &simplex));
     PetscCall(DMPlexGetHeightStratum(dm, 0, &cStart, &cEnd));
     cells = (PetscReal)(cEnd - cStart);
     PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &cells, 1, MPIU_REAL, MPIU_SUM, comm));
@@ -95,6 +97,6 @@ PetscErrorCode SPMeshCheckSize(MPI_Comm comm, DM dm)
     PetscCheck(dim == 2 || dim == 3, comm, PETSC_ERR_USER_INPUT, "-dm_plex_dim %" PetscInt_FMT ": spcontact solves 2D and 3D problems; give 2 or 3", dim);
     PetscCall(CheckBox(comm, dim, simplex, &cells));
   }
-  PetscCall(CheckRefinement(comm, dim, cells));
+  PetscCall(CheckRefinement(comm, dim, simplex, cells));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
