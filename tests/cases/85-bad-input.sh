@@ -67,6 +67,9 @@ B1 with nothing fixing x (a free rigid translation; was rank-dependent displacem
 B2 with nothing fixing x (was exit 0 on 1 and 3 ranks, cut-backs on 2)|input/hertz2d.opts|-bc_0_type pressure -bc_0_value 0
 3D block with nothing fixing y (was 13 cut-backs of DIVERGED_LINEAR_SOLVE)|input/block3d.opts|-bc_1_type pressure -bc_1_value 0
 elasticity without contact and nothing fixing y|@DIR@/nocontact.opts|-bc_1_type traction -bc_1_value 0,0
+rollers with their components swapped: a free rigid rotation (was 13 cut-backs of stalled solves, exit 2)|input/elastic2d.opts|-bc_0_components 0 -bc_1_components 1
+3D rollers swapped about z (was 13 cut-backs of DIVERGED_LINEAR_SOLVE)|input/elastic3d.opts|-dm_plex_box_faces 4,4,4 -bc_1_components 0 -bc_2_components 1
+3D block on a plane, its rollers on the wrong faces: free rotation about z (was 13 cut-backs)|input/block3d.opts|-bc_0_values 3 -bc_1_values 6
 suction on a block on a plane with friction (friction holds no pull-off; was 13 cut-backs)|input/block2d.opts|-bc_1_value -0.01 -contact_friction_mu 0.3
 plane normal pointing away from the body|input/block2d.opts|-contact_obstacle_0_normal 0,-1
 label value given twice (the load was applied twice)|input/block2d.opts|-bc_1_values 3,3
@@ -224,8 +227,9 @@ CASES
 # A misspelt option is reported (one warning line per unused option) and the run is otherwise
 # the default one; -options_left false silences the report
 # The load-balance refusal on 1, 2 and 3 ranks (each rank sums the facets it owns): the same line;
-# and the free rigid translation (B1 with nothing fixing x: it used to give another displacement on
-# 3 ranks than on 1 and 2, each run exit 0)
+# the free rigid translation (B1 with nothing fixing x: it used to give another displacement on
+# 3 ranks than on 1 and 2, each run exit 0) and the free rigid rotation (each vertex counted at its
+# owner, so the same supports on every rank count)
 test_bad_input_balance_ranks() {
   local rc=0 np
   for np in 1 2 3; do
@@ -233,6 +237,16 @@ test_bad_input_balance_ranks() {
     assert_eq "balance refusal on $np rank(s)" "$(grep -c "^spcontact: error: the loads' net force at load factor 1 has a part (0.001, 0, 0) that no support can hold" "$CASE_DIR/b$np.txt")" 1 || rc=1
     spc "$CASE_DIR/t$np.txt" $np -options_file input/block2d.opts -bc_0_type pressure -bc_0_value 0 -output_dir "$CASE_DIR" -output_name t$np
     assert_eq "free translation refused on $np rank(s)" "$(grep -c "^spcontact: error: nothing holds the body against a rigid translation along (1, 0) (Dirichlet conditions fix no component; no frictionless plane's normal has a part along it)" "$CASE_DIR/t$np.txt")" 1 || rc=1
+    # a free rigid rotation (QA helper 29): the rollers' components swapped, 2D without contact,
+    # and in 3D on the faces of each other, the block on its plane; the same point and axis
+    spc "$CASE_DIR/r$np.txt" $np -options_file input/elastic2d.opts -dm_plex_box_faces 4,4 -bc_0_components 0 -bc_1_components 1 -output_dir "$CASE_DIR" -output_name r$np
+    assert_eq "free rotation refused on $np rank(s)" "$(grep -c "^spcontact: error: nothing holds the body against a rigid rotation about the point (0, 0): the Dirichlet conditions (on x, y) leave it free and there is no contact" "$CASE_DIR/r$np.txt")" 1 || rc=1
+    spc "$CASE_DIR/r3d$np.txt" $np -options_file input/block3d.opts -dm_plex_box_faces 4,4,4 -bc_0_values 3 -bc_1_values 6 -output_dir "$CASE_DIR" -output_name r3d$np
+    assert_eq "3D free rotation refused on $np rank(s)" "$(grep -c "^spcontact: error: nothing holds the body against a rigid rotation about the axis (0, 0, 1) through (0, 0, 0.5): the Dirichlet conditions (on x, y) leave it free, and so do the slave points on the frictionless planes" "$CASE_DIR/r3d$np.txt")" 1 || rc=1
+    # ... but the contact points count: B1 held in x on its top face turns about no point that
+    # its bottom, pressed on the plane, lets move
+    spc "$CASE_DIR/h$np.txt" $np -options_file input/block2d.opts -bc_0_values 3 -output_dir "$CASE_DIR" -output_name h$np -output_fields false || rc=1
+    assert_eq "rotation held by the contact on $np rank(s)" "$(sval "$CASE_DIR/h$np.txt" converged)" yes || rc=1
   done
   return $rc
 }
