@@ -192,6 +192,37 @@ indexed option without its value|input/hertz2d.opts|-contact_obstacle_0_mu
 CASES
 }
 
+# A 2D gmsh mesh out of the x-y plane (QA helper 29): PETSc's reader keeps x and y and drops z, so
+# the unit square drawn in the x-z plane was refused as "degenerate (flat) cells" and one tilted
+# about x (z = y) was solved projected, exit 0. Now one line naming z, in gmsh 4.1 and 2.2, on 1
+# and 2 ranks; the same square in the plane z = 0.5 runs
+test_bad_input_mesh_out_of_plane() {
+  local rc=0 np name y z1 z2
+  printf -- '-bc_0_type dirichlet\n-bc_0_values 1\n-bc_1_type pressure\n-bc_1_values 3\n-bc_1_value 0.01\n' > "$CASE_DIR/el.opts"
+  for name in tilt:1:0:1 xz:0:0:1 lifted:1:0.5:0.5; do
+    IFS=: read -r name y z1 z2 <<<"$name"
+    {
+      echo "Point(1) = {0, 0, $z1, 0.25}; Point(2) = {1, 0, $z1, 0.25}; Point(3) = {1, $y, $z2, 0.25}; Point(4) = {0, $y, $z2, 0.25};"
+      echo "Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 1};"
+      echo "Curve Loop(1) = {1, 2, 3, 4}; Plane Surface(1) = {1}; Transfinite Surface{1}; Recombine Surface{1};"
+      echo "Physical Curve(1) = {1}; Physical Curve(2) = {2}; Physical Curve(3) = {3}; Physical Curve(4) = {4}; Physical Surface(10) = {1};"
+    } > "$CASE_DIR/$name.geo"
+    { gmsh -v 2 -2 -o "$CASE_DIR/$name.msh" "$CASE_DIR/$name.geo" && gmsh -v 2 -2 -format msh22 -o "$CASE_DIR/${name}22.msh" "$CASE_DIR/$name.geo"; } >/dev/null || { echo "gmsh failed on $name.geo"; return 1; }
+  done
+  sed "s|@DIR@|$CASE_DIR|g" <<'CASES' | bad_input_cases || rc=1
+square in the x-z plane, gmsh 4.1 (was: degenerate (flat) cells)|@DIR@/el.opts|-mesh_file @DIR@/xz.msh
+square tilted about x, gmsh 4.1 (was: solved projected, exit 0)|@DIR@/el.opts|-mesh_file @DIR@/tilt.msh
+square tilted about x, gmsh 2.2|@DIR@/el.opts|-mesh_file @DIR@/tilt22.msh
+CASES
+  for np in 1 2; do
+    spc "$CASE_DIR/t$np.txt" $np -options_file "$CASE_DIR/el.opts" -mesh_file "$CASE_DIR/tilt.msh" -output_dir "$CASE_DIR" -output_name t$np
+    assert_eq "tilted mesh refused on $np rank(s)" "$(grep -c "^spcontact: error: -mesh_file $CASE_DIR/tilt.msh: a 2D mesh whose nodes leave the plane z = const (z from 0. to 1.)" "$CASE_DIR/t$np.txt")" 1 || rc=1
+    spc "$CASE_DIR/l$np.txt" $np -options_file "$CASE_DIR/el.opts" -mesh_file "$CASE_DIR/lifted22.msh" -output_dir "$CASE_DIR" -output_name l$np || rc=1
+    assert_eq "square at z = 0.5 runs on $np rank(s)" "$(sval "$CASE_DIR/l$np.txt" converged)" yes || rc=1
+  done
+  return $rc
+}
+
 # The same checks on 2 ranks for a subset (one line from rank 0, every rank stops)
 test_bad_input_catalogue_np2() {
   local rc=0 i=0 why args code
