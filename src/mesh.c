@@ -381,6 +381,24 @@ static PetscErrorCode CheckCells(DM dm)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* spcontact solves 2D (plane strain) and 3D problems: a 1D box (-dm_plex_dim 1) ran a 1D problem
+   to exit 0, a gmsh mesh of lines only was refused as flat cells, and -dm_plex_dim 4 gave PETSc's
+   "Dimension 4 should be in [1, 3]". The box's option is looked at before PETSc reads it; dm: the
+   mesh read or built (NULL: not yet) */
+static PetscErrorCode CheckDimension(MPI_Comm comm, const char file[], DM dm)
+{
+  PetscInt  dim = 2;
+  PetscBool set = PETSC_TRUE;
+
+  PetscFunctionBeginUser;
+  if (dm) PetscCall(DMGetDimension(dm, &dim));
+  else PetscCall(PetscOptionsGetInt(NULL, NULL, "-dm_plex_dim", &dim, &set));
+  if (!set) PetscFunctionReturn(PETSC_SUCCESS);
+  if (file[0]) PetscCheck(dim == 2 || dim == 3, comm, PETSC_ERR_USER_INPUT, "-mesh_file %s: a %" PetscInt_FMT "D mesh: spcontact solves 2D (plane strain) and 3D problems; mesh the geometry's surfaces (gmsh -2) or volumes (gmsh -3)", file, dim);
+  PetscCheck(dim == 2 || dim == 3, comm, PETSC_ERR_USER_INPUT, "-dm_plex_dim %" PetscInt_FMT ": spcontact solves 2D (plane strain) and 3D problems; give 2 or 3", dim);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode SPMeshCreate(MPI_Comm comm, DM *dm)
 {
   char file[PETSC_MAX_PATH_LEN] = "", partitioner[64] = "metis";
@@ -394,12 +412,14 @@ PetscErrorCode SPMeshCreate(MPI_Comm comm, DM *dm)
   else {
     /* Debian's PETSc has no simplex generator: default the box to tensor cells (Q1) */
     PetscCall(SPOptionsSetDefault("-dm_plex_simplex", "0"));
+    PetscCall(CheckDimension(comm, file, NULL));
     PetscCall(DMCreate(comm, dm));
     PetscCall(DMSetType(*dm, DMPLEX));
   }
   /* PETSc's options (box sizes, -dm_refine, ...) act on the serial mesh; we distribute ourselves */
   PetscCall(DMPlexDistributeSetDefault(*dm, PETSC_FALSE));
   PetscCall(DMSetFromOptions(*dm));
+  PetscCall(CheckDimension(comm, file, *dm));
   PetscCall(Distribute(dm, partitioner));
   PetscCall(CheckCells(*dm));
   PetscCall(PetscObjectSetName((PetscObject)*dm, "mesh"));

@@ -67,6 +67,8 @@ B1 with nothing fixing x (a free rigid translation; was rank-dependent displacem
 B2 with nothing fixing x (was exit 0 on 1 and 3 ranks, cut-backs on 2)|input/hertz2d.opts|-bc_0_type pressure -bc_0_value 0
 3D block with nothing fixing y (was 13 cut-backs of DIVERGED_LINEAR_SOLVE)|input/block3d.opts|-bc_1_type pressure -bc_1_value 0
 elasticity without contact and nothing fixing y|@DIR@/nocontact.opts|-bc_1_type traction -bc_1_value 0,0
+1D box (was a 1D run to exit 0)|input/elastic2d.opts|-dm_plex_dim 1
+4D box (was PETSc's "Dimension 4 should be in [1, 3]")|input/elastic2d.opts|-dm_plex_dim 4
 rollers with their components swapped: a free rigid rotation (was 13 cut-backs of stalled solves, exit 2)|input/elastic2d.opts|-bc_0_components 0 -bc_1_components 1
 3D rollers swapped about z (was 13 cut-backs of DIVERGED_LINEAR_SOLVE)|input/elastic3d.opts|-dm_plex_box_faces 4,4,4 -bc_1_components 0 -bc_2_components 1
 3D block on a plane, its rollers on the wrong faces: free rotation about z (was 13 cut-backs)|input/block3d.opts|-bc_0_values 3 -bc_1_values 6
@@ -195,7 +197,8 @@ CASES
 # A 2D gmsh mesh out of the x-y plane (QA helper 29): PETSc's reader keeps x and y and drops z, so
 # the unit square drawn in the x-z plane was refused as "degenerate (flat) cells" and one tilted
 # about x (z = y) was solved projected, exit 0. Now one line naming z, in gmsh 4.1 and 2.2, on 1
-# and 2 ranks; the same square in the plane z = 0.5 runs
+# and 2 ranks; the same square in the plane z = 0.5 runs. A mesh of its edges alone (gmsh -1) is
+# refused as 1D (it was "degenerate (flat) cells")
 test_bad_input_mesh_out_of_plane() {
   local rc=0 np name y z1 z2
   printf -- '-bc_0_type dirichlet\n-bc_0_values 1\n-bc_1_type pressure\n-bc_1_values 3\n-bc_1_value 0.01\n' > "$CASE_DIR/el.opts"
@@ -209,10 +212,12 @@ test_bad_input_mesh_out_of_plane() {
     } > "$CASE_DIR/$name.geo"
     { gmsh -v 2 -2 -o "$CASE_DIR/$name.msh" "$CASE_DIR/$name.geo" && gmsh -v 2 -2 -format msh22 -o "$CASE_DIR/${name}22.msh" "$CASE_DIR/$name.geo"; } >/dev/null || { echo "gmsh failed on $name.geo"; return 1; }
   done
+  gmsh -v 2 -1 -o "$CASE_DIR/lines.msh" "$CASE_DIR/lifted.geo" >/dev/null || { echo "gmsh failed on lifted.geo"; return 1; }
   sed "s|@DIR@|$CASE_DIR|g" <<'CASES' | bad_input_cases || rc=1
 square in the x-z plane, gmsh 4.1 (was: degenerate (flat) cells)|@DIR@/el.opts|-mesh_file @DIR@/xz.msh
 square tilted about x, gmsh 4.1 (was: solved projected, exit 0)|@DIR@/el.opts|-mesh_file @DIR@/tilt.msh
 square tilted about x, gmsh 2.2|@DIR@/el.opts|-mesh_file @DIR@/tilt22.msh
+gmsh mesh of lines only (was: degenerate (flat) cells)|@DIR@/el.opts|-mesh_file @DIR@/lines.msh
 CASES
   for np in 1 2; do
     spc "$CASE_DIR/t$np.txt" $np -options_file "$CASE_DIR/el.opts" -mesh_file "$CASE_DIR/tilt.msh" -output_dir "$CASE_DIR" -output_name t$np
