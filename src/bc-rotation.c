@@ -167,6 +167,10 @@ PetscErrorCode SPBCFreeRotation(DM dm, SPContact c, PetscInt *nfree, PetscReal a
   for (PetscInt j = 0; cdim == 3 && j < 3; ++j) axis[j] = mode[3 + j];
   for (PetscInt j = 0; j < 3; ++j) wl += axis[j] * axis[j];
   wl = cdim == 2 ? mode[2] : PetscSqrtReal(wl);
+  if (wl < 1e-8) { /* a free translation, which bc-balance.c reports before (not reached) */
+    *nfree = 0;
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
   for (PetscInt j = 0; cdim == 3 && j < 3; ++j) axis[j] /= wl;
   { /* the axis point nearest the centre: y = w x t / |w|^2 (2D: (-t_y, t_x) / w) */
     const PetscReal *t = mode, wz = cdim == 2 ? mode[2] : 0.0;
