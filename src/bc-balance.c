@@ -288,7 +288,7 @@ static PetscErrorCode FreeRotation(DM dm, SPContact c, PetscInt dim, const char 
   PetscFunctionBeginUser;
   PetscCall(SPBCFreeRotation(dm, c, &nfree, axis, point));
   if (!nfree) PetscFunctionReturn(PETSC_SUCCESS);
-  FormatVector(dim, point, where, sizeof(where));
+  PetscCall(PetscSNPrintf(where, sizeof(where), dim == 2 ? "(%.8g, %.8g)" : "(%.8g, %.8g, %.8g)", (double)point[0], (double)point[1], (double)point[2])); /* a place: more digits than a direction */
   if (dim == 2) PetscCall(PetscSNPrintf(about, sizeof(about), "the point %s", where));
   else {
     char dir[96];

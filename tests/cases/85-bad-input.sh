@@ -287,6 +287,9 @@ test_bad_input_balance_ranks() {
     assert_eq "free rotation refused on $np rank(s)" "$(grep -c "^spcontact: error: nothing holds the body against a rigid rotation about the point (0, 0): the Dirichlet conditions (on x, y) leave it free and there is no contact" "$CASE_DIR/r$np.txt")" 1 || rc=1
     spc "$CASE_DIR/r3d$np.txt" $np -options_file input/block3d.opts -dm_plex_box_faces 4,4,4 -bc_0_values 3 -bc_1_values 6 -output_dir "$CASE_DIR" -output_name r3d$np
     assert_eq "3D free rotation refused on $np rank(s)" "$(grep -c "^spcontact: error: nothing holds the body against a rigid rotation about the axis (0, 0, 1) through (0, 0, 0.5): the Dirichlet conditions (on x, y) leave it free, and so do the slave points on the frictionless planes" "$CASE_DIR/r3d$np.txt")" 1 || rc=1
+    # far from the origin (1000, 2000, 3000), the free rotation about x named at its place
+    spc "$CASE_DIR/rx$np.txt" $np -options_file input/elastic3d.opts -dm_plex_box_faces 3,3,3 -bc_0_components 1 -bc_1_components 2 -dm_plex_box_lower 1000,2000,3000 -dm_plex_box_upper 1001,2001,3001 -output_dir "$CASE_DIR" -output_name rx$np
+    assert_eq "free rotation about x far from the origin on $np rank(s)" "$(grep -c "^spcontact: error: nothing holds the body against a rigid rotation about the axis (1, 0, 0) through (1000.5, 2000, 3000): the Dirichlet conditions (on y, z, x) leave it free and there is no contact" "$CASE_DIR/rx$np.txt")" 1 || rc=1
     # ... but the contact points count: B1 held in x on its top face turns about no point that
     # its bottom, pressed on the plane, lets move
     spc "$CASE_DIR/h$np.txt" $np -options_file input/block2d.opts -bc_0_values 3 -output_dir "$CASE_DIR" -output_name h$np -output_fields false || rc=1
