@@ -76,7 +76,7 @@ static PetscErrorCode AddSupports(DM dm, SPContact c, PetscInt dim, const PetscR
   PetscCall(VecRestoreArrayRead(coords, &x));
   PetscCall(PetscFree(ghost));
   for (PetscInt i = 0; c && c->enabled && i < c->n; ++i)
-    for (PetscInt k = 0; k < c->nob; ++k) {
+    for (PetscInt k = 0; c->pt[i].onObstacle && k < c->nob; ++k) { /* a pair's slave points hold nothing: their forces are internal */
       PetscReal y[3] = {0, 0, 0}, n[3] = {0, 0, 0}, len = 0.0;
       for (PetscInt d = 0; d < dim; ++d) y[d] = (c->pt[i].X[d] - centre[d]) / size, len += c->ob[k].normal[d] * c->ob[k].normal[d];
       for (PetscInt d = 0; d < dim; ++d) n[d] = c->ob[k].normal[d] / PetscSqrtReal(len);

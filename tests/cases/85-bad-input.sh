@@ -78,6 +78,8 @@ numeric PETSc option joined by =|input/hertz2d.opts|-ksp_rtol=1e-3
 rollers with their components swapped: a free rigid rotation (was 13 cut-backs of stalled solves, exit 2)|input/elastic2d.opts|-bc_0_components 0 -bc_1_components 1
 3D rollers swapped about z (was 13 cut-backs of DIVERGED_LINEAR_SOLVE)|input/elastic3d.opts|-dm_plex_box_faces 4,4,4 -bc_1_components 0 -bc_2_components 1
 3D block on a plane, its rollers on the wrong faces: free rotation about z (was 13 cut-backs)|input/block3d.opts|-bc_0_values 3 -bc_1_values 6
+patch test's two blocks with nothing holding x (pairs' forces are internal; was exit 0, 5 / 86 / 61 Newton iterations on 1 / 2 / 3 ranks)|input/patch_4_5.opts|-bc_1_type pressure -bc_1_value 0
+patch test with a net shear no support holds (pairs)|input/patch_4_5.opts|-bc_1_type pressure -bc_1_value 0 -bc_2_type traction -bc_2_value 0.001,-0.01
 suction on a block on a plane with friction (friction holds no pull-off; was 13 cut-backs)|input/block2d.opts|-bc_1_value -0.01 -contact_friction_mu 0.3
 plane normal pointing away from the body|input/block2d.opts|-contact_obstacle_0_normal 0,-1
 label value given twice (the load was applied twice)|input/block2d.opts|-bc_1_values 3,3
@@ -287,6 +289,13 @@ test_bad_input_balance_ranks() {
     assert_eq "free rotation refused on $np rank(s)" "$(grep -c "^spcontact: error: nothing holds the body against a rigid rotation about the point (0, 0): the Dirichlet conditions (on x, y) leave it free and there is no contact" "$CASE_DIR/r$np.txt")" 1 || rc=1
     spc "$CASE_DIR/r3d$np.txt" $np -options_file input/block3d.opts -dm_plex_box_faces 4,4,4 -bc_0_values 3 -bc_1_values 6 -output_dir "$CASE_DIR" -output_name r3d$np
     assert_eq "3D free rotation refused on $np rank(s)" "$(grep -c "^spcontact: error: nothing holds the body against a rigid rotation about the axis (0, 0, 1) through (0, 0, 0.5): the Dirichlet conditions (on x, y) leave it free, and so do the slave points on the frictionless planes" "$CASE_DIR/r3d$np.txt")" 1 || rc=1
+    # with contact pairs, whose forces are internal: the two blocks of the patch test with nothing
+    # holding x (exit 0 with 5, 86 and 61 Newton iterations on 1, 2 and 3 ranks), and with their
+    # rollers swapped (13 cut-backs, exit 2)
+    spc "$CASE_DIR/pt$np.txt" $np -options_file input/patch_4_5.opts -bc_1_type pressure -bc_1_value 0 -output_dir "$CASE_DIR" -output_name pt$np
+    assert_eq "pairs: free translation refused on $np rank(s)" "$(grep -c "^spcontact: error: nothing holds the body against a rigid translation along (1, 0) (Dirichlet conditions fix y; the contact pairs only pass forces between the bodies)" "$CASE_DIR/pt$np.txt")" 1 || rc=1
+    spc "$CASE_DIR/pr$np.txt" $np -options_file input/patch_4_5.opts -bc_0_components 0 -bc_1_components 1 -output_dir "$CASE_DIR" -output_name pr$np
+    assert_eq "pairs: free rotation refused on $np rank(s)" "$(grep -c "^spcontact: error: nothing holds the body against a rigid rotation about the point (0, 0): the Dirichlet conditions (on x, y) leave it free (the contact pairs only pass forces between the bodies)" "$CASE_DIR/pr$np.txt")" 1 || rc=1
     # far from the origin (1000, 2000, 3000), the free rotation about x named at its place
     spc "$CASE_DIR/rx$np.txt" $np -options_file input/elastic3d.opts -dm_plex_box_faces 3,3,3 -bc_0_components 1 -bc_1_components 2 -dm_plex_box_lower 1000,2000,3000 -dm_plex_box_upper 1001,2001,3001 -output_dir "$CASE_DIR" -output_name rx$np
     assert_eq "free rotation about x far from the origin on $np rank(s)" "$(grep -c "^spcontact: error: nothing holds the body against a rigid rotation about the axis (1, 0, 0) through (1000.5, 2000, 3000): the Dirichlet conditions (on y, z, x) leave it free and there is no contact" "$CASE_DIR/rx$np.txt")" 1 || rc=1
