@@ -107,6 +107,7 @@ struct _n_SPProblem {
 PETSC_EXTERN PetscErrorCode SPBCSetFromOptions(MPI_Comm, PetscInt, PetscInt *, SPBC[]);
 PETSC_EXTERN PetscErrorCode SPBCAddToDS(DM, PetscInt, SPBC[], PetscScalar[]);
 PETSC_EXTERN PetscErrorCode SPBCCheckBalance(DM, SPProblem, SPContact); /* bc-balance.c: loads the supports cannot hold, refused */
+PETSC_EXTERN PetscErrorCode SPBCFreeRotation(DM, SPContact, PetscInt *, PetscReal[3], PetscReal[3]); /* bc-rotation.c: a rigid rotation the supports leave free */
 PETSC_EXTERN PetscReal      SPBCAmplitude(const SPBC *, PetscReal); /* a condition's load curve at a load factor */
 PETSC_EXTERN void           SPBCSetLoad(PetscInt, const SPBC[], PetscReal, PetscScalar[]);
 PETSC_EXTERN PetscBool      SPBCProportional(PetscInt, const SPBC[], const PetscReal[3], PetscReal);

@@ -1,14 +1,15 @@
 /* A static problem needs its loads held: the net applied force must lie in the span of the forces
    its supports can react. Checked before the solve where that span follows from the options
    alone: Dirichlet conditions react along their components, frictionless rigid planes along
-   their normals, and no pair, friction, curved obstacle or follower pressure is present (those
-   react, or load, in directions that depend on the solution). A net force outside the span (a
+   their normals, and no friction, curved obstacle or follower pressure is present (those react,
+   or load, in directions that depend on the solution); contact pairs only pass forces between the
+   bodies, so with them the bodies are checked together (one of them free alone is not seen). A net force outside the span (a
    shear on a block on a frictionless plane with no condition fixing that direction) has no
    equilibrium: the solve would stall and cut back to -load_min_increment without saying why.
    A plane only pushes: its reaction is a non-negative multiple of its normal, so a load pulling
    the body off its planes (a suction on B1's top) is refused too, and so is a body that nothing
-   holds against a rigid translation, whatever the loads. A necessary condition only: rotations,
-   moments and where the supports sit are not checked. */
+   holds against a rigid translation, or a rigid rotation (bc-rotation.c), whatever the loads. A
+   necessary condition only: the loads' moments are not checked. */
 #include <spcontact-impl.h>
 
 /* This rank's part of the net force of Neumann condition bc at full amplitude, and of its scale
@@ -61,7 +62,9 @@ static PetscBool Applies(SPProblem p, SPContact c, PetscBool *pullOnly)
   for (PetscInt i = 0; i < p->nbc; ++i)
     if (p->bc[i].follower) return PETSC_FALSE;
   if (!c || !c->enabled) return PETSC_TRUE;
-  if (c->npair > 0) return PETSC_FALSE;
+  /* pairs: their forces are internal (the master's equals minus the slave's) and a rigid motion of
+     every body together leaves their gaps and slips unchanged, so the net force and the whole
+     assembly's rigid motions are checked against the Dirichlet conditions and obstacles alone */
   for (PetscInt k = 0; k < c->nob; ++k)
     if (c->ob[k].type != SP_OBSTACLE_PLANE) return PETSC_FALSE;
   *pullOnly = c->friction;
@@ -278,6 +281,38 @@ static void FormatVector(PetscInt dim, const PetscReal v[3], char s[], size_t le
   (void)PetscSNPrintf(s, len, dim == 2 ? "(%.4g, %.4g)" : "(%.4g, %.4g, %.4g)", (double)v[0], (double)v[1], (double)v[2]);
 }
 
+/* Whether the run has rigid obstacles (planes, where the check applies) / contact pairs */
+static PetscBool Planes(SPContact c)
+{
+  return c && c->enabled && c->nob > 0 ? PETSC_TRUE : PETSC_FALSE;
+}
+
+static PetscBool Pairs(SPContact c)
+{
+  return c && c->enabled && c->npair > 0 ? PETSC_TRUE : PETSC_FALSE;
+}
+
+/* Collective: one line if the supports leave a rigid rotation free (bc-rotation.c) */
+static PetscErrorCode FreeRotation(DM dm, SPContact c, PetscInt dim, const char fixed[])
+{
+  PetscInt  nfree;
+  PetscReal axis[3], point[3];
+  char      about[160], where[96], many[64] = "";
+
+  PetscFunctionBeginUser;
+  PetscCall(SPBCFreeRotation(dm, c, &nfree, axis, point));
+  if (!nfree) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(PetscSNPrintf(where, sizeof(where), dim == 2 ? "(%.8g, %.8g)" : "(%.8g, %.8g, %.8g)", (double)point[0], (double)point[1], (double)point[2])); /* a place: more digits than a direction */
+  if (dim == 2) PetscCall(PetscSNPrintf(about, sizeof(about), "the point %s", where));
+  else {
+    char dir[96];
+    FormatVector(dim, axis, dir, sizeof(dir));
+    PetscCall(PetscSNPrintf(about, sizeof(about), "the axis %s through %s", dir, where));
+  }
+  if (nfree > 1) PetscCall(PetscSNPrintf(many, sizeof(many), " (one of %" PetscInt_FMT " independent free rotations)", nfree));
+  SETERRQ(PetscObjectComm((PetscObject)dm), PETSC_ERR_USER_INPUT, "nothing holds the body against a rigid rotation about %s%s: the Dirichlet conditions (on %s) leave it free%s, so the solution is not unique. Fix a component that the rotation moves (a roller fixes the component normal to its face: check -bc_<i>_components; conditions on one line or at one point do not hold a rotation about it)", about, many, fixed[0] ? fixed : "no component", Planes(c) ? ", and so do the slave points on the frictionless planes, all counted as touching" : Pairs(c) ? " (the contact pairs only pass forces between the bodies)" : " and there is no contact");
+}
+
 /* Collective, after the contact set-up: one line if the loads cannot be held. The net force is
    linear in the load factor between the ends of the load curves, so those and 1 are checked. */
 PetscErrorCode SPBCCheckBalance(DM dm, SPProblem p, SPContact c)
@@ -302,12 +337,16 @@ PetscErrorCode SPBCCheckBalance(DM dm, SPProblem p, SPContact c)
   unheld = Unheld(p, F, load, q, nq, n, nn, pullOnly ? nhat : NULL, perp);
   for (PetscInt i = 0; i < p->nbc && !unheld; ++i)
     for (PetscInt e = 0; e < 2 && !unheld; ++e) load = p->bc[i].ramp[e], unheld = load > 0.0 && Unheld(p, F, load, q, nq, n, nn, pullOnly ? nhat : NULL, perp);
-  if (!unheld) { /* the loads are held; the body must be too, against every rigid translation */
-    if (pullOnly || !FreeTranslation(dim, q, nq, orig, nn, perp)) PetscFunctionReturn(PETSC_SUCCESS);
-    FormatVector(dim, perp, force, sizeof(force));
-    SETERRQ(comm, PETSC_ERR_USER_INPUT, "nothing holds the body against a rigid translation along %s (Dirichlet conditions fix %s; %s): the solution is not unique. Add a Dirichlet condition on that component (a symmetry plane, or a face that is held)%s", force, fixed[0] ? fixed : "no component", c && c->enabled ? "no frictionless plane's normal has a part along it" : "there is no contact", c && c->enabled ? ", or friction (-contact_friction_mu)" : "");
+  if (!unheld) { /* the loads are held; the body must be too, against every rigid translation and rotation */
+    if (pullOnly) PetscFunctionReturn(PETSC_SUCCESS);
+    if (FreeTranslation(dim, q, nq, orig, nn, perp)) {
+      FormatVector(dim, perp, force, sizeof(force));
+      SETERRQ(comm, PETSC_ERR_USER_INPUT, "nothing holds the body against a rigid translation along %s (Dirichlet conditions fix %s; %s): the solution is not unique. Add a Dirichlet condition on that component (a symmetry plane, or a face that is held)%s", force, fixed[0] ? fixed : "no component", Planes(c) ? "no frictionless plane's normal has a part along it" : Pairs(c) ? "the contact pairs only pass forces between the bodies" : "there is no contact", Planes(c) ? ", or friction (-contact_friction_mu)" : "");
+    }
+    PetscCall(FreeRotation(dm, c, dim, fixed));
+    PetscFunctionReturn(PETSC_SUCCESS);
   }
   FormatVector(dim, perp, force, sizeof(force));
   PetscCheck(!PullsOff(dim, perp, n, nn), comm, PETSC_ERR_USER_INPUT, "the loads' net force at load factor %.6g has a part %s that pulls the body off its obstacles (Dirichlet conditions fix %s; a plane only pushes, along its normal%s): no equilibrium exists. Reverse that load, or add a Dirichlet condition in that direction (if the load is right, check that each -contact_obstacle_<k>_normal points towards the body)", (double)load, force, fixed[0] ? fixed : "no component", pullOnly ? ", and its friction does not hold a body pulled off" : "");
-  SETERRQ(comm, PETSC_ERR_USER_INPUT, "the loads' net force at load factor %.6g has a part %s that no support can hold (Dirichlet conditions fix %s; %s): no equilibrium exists. %s", (double)load, force, fixed[0] ? fixed : "no component", c && c->enabled ? "the obstacles are frictionless planes, which only push, along their normals" : "there is no contact", c && c->enabled ? "Add friction (-contact_friction_mu), a Dirichlet condition in that direction, or loads that balance" : "Add a Dirichlet condition in that direction, or loads that balance");
+  SETERRQ(comm, PETSC_ERR_USER_INPUT, "the loads' net force at load factor %.6g has a part %s that no support can hold (Dirichlet conditions fix %s; %s): no equilibrium exists. %s", (double)load, force, fixed[0] ? fixed : "no component", Planes(c) ? "the obstacles are frictionless planes, which only push, along their normals" : Pairs(c) ? "the contact pairs only pass forces between the bodies" : "there is no contact", Planes(c) ? "Add friction (-contact_friction_mu), a Dirichlet condition in that direction, or loads that balance" : "Add a Dirichlet condition in that direction, or loads that balance");
 }

@@ -505,9 +505,11 @@ static PetscErrorCode ViewSetUp(SPContact c, PetscViewer v)
   PetscCall(PetscViewerASCIIPrintf(v, "contact_exchanges %" PetscInt_FMT "\ncontact_exchange_time %.6f\n", c->exchanges, (double)tmax));
   PetscCall(PetscViewerASCIIPrintf(v, "contact_exchange_facets_per_rank %.1f\n", c->exchanges ? (double)rec / (double)(c->exchanges * size) : 0.0));
   PetscCall(PetscViewerASCIIPrintf(v, "contact_pattern_rebuilds %" PetscInt_FMT "\n", c->rebuilds));
-  if (c->npair) { /* mallocs during MatSetValues on the Jacobian (0: the preallocation held) */
+  if (c->npair) { /* mallocs during MatSetValues on the Jacobian (0: the preallocation held, or no
+                     Jacobian yet: a run stopped by -max_wall_time before its first solve) */
     MatInfo info;
-    PetscCall(MatGetInfo(c->Jref, MAT_GLOBAL_SUM, &info));
+    info.mallocs = 0.0;
+    if (c->Jref) PetscCall(MatGetInfo(c->Jref, MAT_GLOBAL_SUM, &info));
     PetscCall(PetscViewerASCIIPrintf(v, "contact_jacobian_mallocs %g\n", (double)info.mallocs));
   }
   PetscCall(SPContactGetAccelSteps(c, &accelSteps));

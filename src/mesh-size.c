@@ -77,7 +77,7 @@ static PetscErrorCode CheckRefinement(MPI_Comm comm, PetscInt dim, PetscBool sim
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Before DMSetFromOptions: dm is the mesh read from a file, or NULL for PETSc's box */
+/* Before DMSetFromOptions, after the dimension's check: dm is the mesh read from a file, or NULL for PETSc's box */
 PetscErrorCode SPMeshCheckSize(MPI_Comm comm, DM dm)
 {
   PetscInt  dim = 2, cStart = 0, cEnd = 0;
@@ -93,8 +93,7 @@ PetscErrorCode SPMeshCheckSize(MPI_Comm comm, DM dm)
     PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &cells, 1, MPIU_REAL, MPIU_SUM, comm));
   } else {
     PetscCall(PetscOptionsGetInt(NULL, NULL, "-dm_plex_dim", &dim, NULL));
-    PetscCall(PetscOptionsGetBool(NULL, NULL, "-dm_plex_simplex", &simplex, NULL));
-    PetscCheck(dim == 2 || dim == 3, comm, PETSC_ERR_USER_INPUT, "-dm_plex_dim %" PetscInt_FMT ": spcontact solves 2D and 3D problems; give 2 or 3", dim);
+    PetscCall(PetscOptionsGetBool(NULL, NULL, "-dm_plex_simplex", &simplex, NULL)); /* -dm_plex_dim: 2 or 3 (mesh.c) */
     PetscCall(CheckBox(comm, dim, simplex, &cells));
   }
   PetscCall(CheckRefinement(comm, dim, simplex, cells));

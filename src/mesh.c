@@ -2,32 +2,83 @@
 #include <spcontact-impl.h>
 #include <kernels/tensor.h>
 
+/* The range of the node coordinates of an ASCII gmsh file at its $Nodes section (r: min x, y, z,
+   then max x, y, z); false if the section cannot be read (binary files: not looked at). PETSc's
+   reader keeps dim coordinates of a 2D mesh and drops z, so a 2D mesh drawn out of the x-y plane
+   is read projected on it. */
+static PetscBool NodeRange(FILE *fp, int major, double r[6])
+{
+  char line[256];
+  long nb = 1, nn;
+
+  for (int d = 0; d < 3; ++d) r[d] = PETSC_MAX_REAL, r[3 + d] = -PETSC_MAX_REAL;
+  while (fgets(line, sizeof(line), fp) && strncmp(line, "$Nodes", 6)) {}
+  if (feof(fp)) return PETSC_FALSE;
+  if (major == 4 && fscanf(fp, "%ld %*d %*d %*d", &nb) != 1) return PETSC_FALSE;
+  for (long b = 0; b < nb; ++b) {
+    int dim = 0, param = 0;
+    if (major == 4 && fscanf(fp, "%d %*d %d %ld", &dim, &param, &nn) != 3) return PETSC_FALSE;
+    if (major != 4 && fscanf(fp, "%ld", &nn) != 1) return PETSC_FALSE;
+    for (long k = 0; major == 4 && k < nn; ++k)
+      if (fscanf(fp, "%*d") != 0) return PETSC_FALSE;
+    for (long k = 0; k < nn; ++k) {
+      double x[3];
+      if (major != 4 && fscanf(fp, "%*d") != 0) return PETSC_FALSE;
+      if (fscanf(fp, "%lf %lf %lf", &x[0], &x[1], &x[2]) != 3) return PETSC_FALSE;
+      for (int u = 0; param && u < dim; ++u)
+        if (fscanf(fp, "%*f") != 0) return PETSC_FALSE;
+      for (int d = 0; d < 3; ++d) r[d] = PetscMin(r[d], x[d]), r[3 + d] = PetscMax(r[3 + d], x[d]);
+    }
+  }
+  return PETSC_TRUE;
+}
+
 /* A gmsh file must exist and start with $MeshFormat; checked on rank 0 before PETSc's reader
-   runs, so a bad file is a clear, collective error instead of a parse failure deep inside. */
-static PetscErrorCode CheckMeshFile(MPI_Comm comm, const char file[])
+   runs, so a bad file is a clear, collective error instead of a parse failure deep inside.
+   range: its nodes' coordinate range (NodeRange; min > max if not known) */
+static PetscErrorCode CheckMeshFile(MPI_Comm comm, const char file[], double range[6])
 {
   PetscMPIInt rank;
-  int         status = 0; /* 0 ok, 1 missing, 2 not gmsh, 3 unsupported version */
+  int         status = 0, type = 1; /* 0 ok, 1 missing, 2 not gmsh, 3 unsupported version; type 0: ASCII */
   char        version[32] = "";
 
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  for (int d = 0; d < 3; ++d) range[d] = 1.0, range[3 + d] = 0.0;
   if (rank == 0) {
     FILE *fp = fopen(file, "r");
     char  line[64] = "";
     if (!fp) status = 1;
     else {
       if (!fgets(line, sizeof(line), fp) || strncmp(line, "$MeshFormat", 11)) status = 2;
-      else if (!fgets(line, sizeof(line), fp) || sscanf(line, "%31s", version) != 1) status = 2;
+      else if (!fgets(line, sizeof(line), fp) || sscanf(line, "%31s %d", version, &type) < 1) status = 2;
       else if (strncmp(version, "2.2", 3) && strncmp(version, "4", 1)) status = 3; /* PETSc 3.18 reads 2.2 and 4.x */
+      if (!status && type == 0 && !NodeRange(fp, version[0] == '4' ? 4 : 2, range))
+        for (int d = 0; d < 3; ++d) range[d] = 1.0, range[3 + d] = 0.0;
       fclose(fp);
     }
   }
   PetscCallMPI(MPI_Bcast(&status, 1, MPI_INT, 0, comm));
   PetscCallMPI(MPI_Bcast(version, sizeof(version), MPI_CHAR, 0, comm));
+  PetscCallMPI(MPI_Bcast(range, 6, MPI_DOUBLE, 0, comm));
   PetscCheck(status != 1, comm, PETSC_ERR_USER_INPUT, "-mesh_file %s: cannot open the file (check the path; run `make meshes` to build input/*.geo into build/mesh/)", file);
   PetscCheck(status != 2, comm, PETSC_ERR_USER_INPUT, "-mesh_file %s: not a gmsh mesh (no $MeshFormat header); give a .msh written by gmsh", file);
   PetscCheck(status != 3, comm, PETSC_ERR_USER_INPUT, "-mesh_file %s: gmsh format %s is not supported; write format 4.1 or 2.2 (gmsh -format msh41, or File > Export), or convert it with scripts/convert-mesh", file, version);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* A 2D mesh must lie in a plane z = const: PETSc keeps its x, y and drops z, so a mesh drawn in
+   the x-z plane became flat cells and a tilted one was solved projected, without a word */
+static PetscErrorCode CheckPlanar(DM dm, const char file[], const double r[6])
+{
+  PetscInt dim;
+  double   extent = 0.0;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMGetDimension(dm, &dim));
+  if (dim != 2 || r[0] > r[3]) PetscFunctionReturn(PETSC_SUCCESS);
+  for (int d = 0; d < 3; ++d) extent = PetscMax(extent, r[3 + d] - r[d]);
+  PetscCheck(r[5] - r[2] <= 1e-10 * extent, PetscObjectComm((PetscObject)dm), PETSC_ERR_USER_INPUT, "-mesh_file %s: a 2D mesh whose nodes leave the plane z = const (z from %g to %g): spcontact's 2D is plane strain in x and y, and the reader would drop z; draw the 2D geometry in the x-y plane, or give a 3D mesh", file, r[2], r[5]);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -48,13 +99,15 @@ static PetscErrorCode ReadMesh(MPI_Comm comm, const char file[], DM *dm)
 {
   PetscMPIInt size, rank;
   int         bad = 0;
+  double      range[6];
 
   PetscFunctionBeginUser;
-  PetscCall(CheckMeshFile(comm, file));
+  PetscCall(CheckMeshFile(comm, file, range));
   PetscCallMPI(MPI_Comm_size(comm, &size));
   if (size == 1) { /* one process: nobody can be left waiting, so one read (B2: 17 ms saved) */
     PetscCall(TryRead(comm, file, PETSC_TRUE, dm, &bad));
     PetscCheck(!bad, comm, PETSC_ERR_USER_INPUT, "-mesh_file %s: the gmsh reader failed; is the file complete?", file);
+    PetscCall(CheckPlanar(*dm, file, range));
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   /* Parse once on rank 0 alone: a truncated file then fails on rank 0 only and is reported to all,
@@ -68,6 +121,7 @@ static PetscErrorCode ReadMesh(MPI_Comm comm, const char file[], DM *dm)
   PetscCallMPI(MPI_Bcast(&bad, 1, MPI_INT, 0, comm));
   PetscCheck(!bad, comm, PETSC_ERR_USER_INPUT, "-mesh_file %s: the gmsh reader failed; is the file complete?", file);
   PetscCall(DMPlexCreateFromFile(comm, file, "spcontact", PETSC_TRUE, dm));
+  PetscCall(CheckPlanar(*dm, file, range));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -327,6 +381,24 @@ static PetscErrorCode CheckCells(DM dm)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* spcontact solves 2D (plane strain) and 3D problems: a 1D box (-dm_plex_dim 1) ran a 1D problem
+   to exit 0, a gmsh mesh of lines only was refused as flat cells, and -dm_plex_dim 4 gave PETSc's
+   "Dimension 4 should be in [1, 3]". The box's option is looked at before PETSc reads it; dm: the
+   mesh read (NULL: a box, not yet built) */
+static PetscErrorCode CheckDimension(MPI_Comm comm, const char file[], DM dm)
+{
+  PetscInt  dim = 2;
+  PetscBool set = PETSC_TRUE;
+
+  PetscFunctionBeginUser;
+  if (dm) PetscCall(DMGetDimension(dm, &dim));
+  else PetscCall(PetscOptionsGetInt(NULL, NULL, "-dm_plex_dim", &dim, &set));
+  if (!set) PetscFunctionReturn(PETSC_SUCCESS);
+  if (file[0]) PetscCheck(dim == 2 || dim == 3, comm, PETSC_ERR_USER_INPUT, "-mesh_file %s: a %" PetscInt_FMT "D mesh: spcontact solves 2D (plane strain) and 3D problems; mesh the geometry's surfaces (gmsh -2) or volumes (gmsh -3)", file, dim);
+  PetscCheck(dim == 2 || dim == 3, comm, PETSC_ERR_USER_INPUT, "-dm_plex_dim %" PetscInt_FMT ": spcontact solves 2D (plane strain) and 3D problems; give 2 or 3", dim);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode SPMeshCreate(MPI_Comm comm, DM *dm)
 {
   char file[PETSC_MAX_PATH_LEN] = "", partitioner[64] = "metis";
@@ -338,11 +410,13 @@ PetscErrorCode SPMeshCreate(MPI_Comm comm, DM *dm)
   PetscOptionsEnd();
   if (file[0]) {
     PetscCall(ReadMesh(comm, file, dm));
+    PetscCall(CheckDimension(comm, file, *dm));
     PetscCall(SPMeshCheckSize(comm, *dm));
   } else {
-    PetscCall(SPMeshCheckSize(comm, NULL));
     /* Debian's PETSc has no simplex generator: default the box to tensor cells (Q1) */
     PetscCall(SPOptionsSetDefault("-dm_plex_simplex", "0"));
+    PetscCall(CheckDimension(comm, file, NULL));
+    PetscCall(SPMeshCheckSize(comm, NULL));
     PetscCall(DMCreate(comm, dm));
     PetscCall(DMSetType(*dm, DMPLEX));
   }

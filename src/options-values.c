@@ -15,7 +15,8 @@
    PETSc's named values (PETSC_DEFAULT, DEFAULT, PETSC_DECIDE, DECIDE, any case) are refused
    before the set-up in the same options (but those taking a word: a type, label, name, file):
    PETSc reads them as -2 and -1 and stores them, so "-contact_penalty PETSC_DEFAULT" was refused
-   as "-contact_penalty -2" and "-ksp_rtol PETSC_DEFAULT" set rtol -2. */
+   as "-contact_penalty -2" and "-ksp_rtol PETSC_DEFAULT" set rtol -2. A value joined to its name by
+   '=' (-contact_method=alm) is refused then too. */
 #include <ctype.h>
 #include <strings.h>
 #include <spcontact-impl.h>
@@ -133,10 +134,24 @@ static PetscErrorCode ForEachOption(MPI_Comm comm, PetscErrorCode (*check)(MPI_C
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Collective, before the set-up reads any option: PETSc's named values in numeric options */
+/* Refused if the name holds '=': PETSc takes a value after a space, so -contact_method=alm was an
+   option nothing reads, and the run went on with the default method to exit 0, saying so only in
+   the unused-option report at its end */
+static PetscErrorCode CheckGlued(MPI_Comm comm, const char name[], const char shown[], const char rest[])
+{
+  const char *eq = strchr(shown, '=');
+
+  PetscFunctionBeginUser;
+  PetscCheck(!eq, comm, PETSC_ERR_USER_INPUT, "%s: a value joined to its option by '='; PETSc options take their value after a space: %.*s %s", shown, (int)(eq - shown), shown, eq + 1);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Collective, before the set-up reads any option: values joined by '=', PETSc's named values in
+   numeric options */
 PetscErrorCode SPOptionsCheckNamedValues(MPI_Comm comm)
 {
   PetscFunctionBeginUser;
+  PetscCall(ForEachOption(comm, CheckGlued));
   PetscCall(ForEachOption(comm, CheckNamed));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -3,7 +3,8 @@
    in one line: the YAML parses (libyaml), and every document is empty or a mapping of scalar keys
    to scalars, sequences (of scalars or one-pair mappings) or mappings (prefixes); "<<" merges a
    mapping or a sequence of mappings; a key "$$..." is skipped, but with the tag !include its
-   value names a YAML file read in place (checked the same way). */
+   value names a YAML file read in place (checked the same way). A key given twice in one mapping
+   (not valid YAML; libyaml keeps both and PETSc took the last without a word) is refused. */
 #include <stdio.h>
 #include <string.h>
 #include <yaml.h>
@@ -106,6 +107,13 @@ static int Layer(Ctx *c, yaml_node_t *node)
 
     if (!k || !v) return Bad(c, node, "corrupt YAML document");
     if (k->type != YAML_SCALAR_NODE) return Bad(c, k, "an option name must be a plain word");
+    for (yaml_node_pair_t *q = node->data.mapping.pairs.start; q < p; ++q) { /* libyaml keeps both; PETSc took the last */
+      yaml_node_t *kq = yaml_document_get_node(c->doc, q->key);
+      char         what[256];
+      if (!kq || kq->type != YAML_SCALAR_NODE || strcmp(Str(kq), Str(k)) || !strcmp(Str(k), "<<")) continue;
+      snprintf(what, sizeof(what), "'%.100s' given twice in one mapping (first on line %lu); YAML keys are unique, and PETSc would let the later one override the first without a word: keep one", Str(k), (unsigned long)kq->start_mark.line + 1);
+      return Bad(c, k, what);
+    }
     if (Value(c, k, v)) return 1;
   }
   return 0;

@@ -253,6 +253,16 @@ test_units_wall_time() {
   assert_eq restarted_exit_code "$code" 3 || rc=1
   assert_eq restarted_status "$(sval "$CASE_DIR/b.txt" status)" stopped || rc=1
   assert_eq restarted_hint "$(grep -c "^spcontact: stopped by -max_wall_time before a load step converged after the restart (load step 1, load factor 0.333333); restart with -restart $CASE_DIR/a.h5.part again" "$CASE_DIR/b.txt")" 1 || rc=1
+  # a run with contact pairs stopped before its first solve has no Jacobian yet: its summary
+  # crashed (SEGV in MatGetInfo, exit 59; QA helper 29); now the stop, with the pairs' keys
+  local np
+  for np in 1 2; do
+    spc "$CASE_DIR/pair$np.txt" $np -options_file input/patch_4_5.opts -output_dir "$CASE_DIR" -output_name pair$np -max_wall_time 1e-6; code=$?
+    assert_eq "pair_exit_code_np$np" "$code" 3 || rc=1
+    assert_eq "pair_status_np$np" "$(sval "$CASE_DIR/pair$np.txt" status)" stopped || rc=1
+    assert_eq "pair_mallocs_np$np" "$(sval "$CASE_DIR/pair$np.txt" contact_jacobian_mallocs)" 0. || rc=1
+    assert_eq "pair_summary_end_np$np" "$(grep -c '^=== end summary ===' "$CASE_DIR/pair$np.txt")" 1 || rc=1
+  done
   return $rc
 }
 

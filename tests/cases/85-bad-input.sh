@@ -18,11 +18,14 @@ test_bad_input_catalogue() {
   printf -- '-load_steps 1\n-options_file\n' > "$CASE_DIR/dangling.opts"
   printf -- '-load_steps 1\n-bc_1_value 0.0015, 0.001 # a value with a space, unquoted\n' > "$CASE_DIR/twovalues.opts"
   printf -- '-load_steps 1 -output_fields false\n' > "$CASE_DIR/twoopts.opts"
+  printf -- '-contact_method=alm\n' > "$CASE_DIR/glued.opts"
   printf 'contact:\n  method: [alm\n' > "$CASE_DIR/unclosed.yaml"
   printf -- '- load_steps\n- 2\n' > "$CASE_DIR/list.yaml"
   printf 'options_file: input/hertz2d.opts\n' > "$CASE_DIR/named.yaml"
   printf 'load_steps: 2\n$$more: !include /nonexistent/more.yaml\n' > "$CASE_DIR/include.yaml"
   printf '$$me: !include %s/self.yaml\n' "$CASE_DIR" > "$CASE_DIR/self.yaml"
+  printf 'contact:\n  method: alm\n  alpha: 100\nload_steps: 2\ncontact:\n  method: penalty\n' > "$CASE_DIR/twice.yaml"
+  printf 'contact:\n  method: alm\n  method: penalty\n' > "$CASE_DIR/twice_nested.yaml"
   sed -e "s|@DIR@|$CASE_DIR|g" -e "s|@LONG@|$(printf 'x%.0s' {1..300})|" <<'CASES' | bad_input_cases
 contact label on cells|input/hertz2d.opts|-contact_label "Cell Sets" -contact_values 1
 contact value without points|input/hertz2d.opts|-contact_values 99
@@ -67,6 +70,16 @@ B1 with nothing fixing x (a free rigid translation; was rank-dependent displacem
 B2 with nothing fixing x (was exit 0 on 1 and 3 ranks, cut-backs on 2)|input/hertz2d.opts|-bc_0_type pressure -bc_0_value 0
 3D block with nothing fixing y (was 13 cut-backs of DIVERGED_LINEAR_SOLVE)|input/block3d.opts|-bc_1_type pressure -bc_1_value 0
 elasticity without contact and nothing fixing y|@DIR@/nocontact.opts|-bc_1_type traction -bc_1_value 0,0
+value joined to its option by = (was the default method, exit 0, one warning at the end)|input/hertz2d.opts|-contact_method=alm
+value joined by = in an options file|input/hertz2d.opts|-options_file @DIR@/glued.opts
+numeric PETSc option joined by =|input/hertz2d.opts|-ksp_rtol=1e-3
+1D box (was a 1D run to exit 0)|input/elastic2d.opts|-dm_plex_dim 1
+4D box (was PETSc's "Dimension 4 should be in [1, 3]")|input/elastic2d.opts|-dm_plex_dim 4
+rollers with their components swapped: a free rigid rotation (was 13 cut-backs of stalled solves, exit 2)|input/elastic2d.opts|-bc_0_components 0 -bc_1_components 1
+3D rollers swapped about z (was 13 cut-backs of DIVERGED_LINEAR_SOLVE)|input/elastic3d.opts|-dm_plex_box_faces 4,4,4 -bc_1_components 0 -bc_2_components 1
+3D block on a plane, its rollers on the wrong faces: free rotation about z (was 13 cut-backs)|input/block3d.opts|-bc_0_values 3 -bc_1_values 6
+patch test's two blocks with nothing holding x (pairs' forces are internal; was exit 0, 5 / 86 / 61 Newton iterations on 1 / 2 / 3 ranks)|input/patch_4_5.opts|-bc_1_type pressure -bc_1_value 0
+patch test with a net shear no support holds (pairs)|input/patch_4_5.opts|-bc_1_type pressure -bc_1_value 0 -bc_2_type traction -bc_2_value 0.001,-0.01
 suction on a block on a plane with friction (friction holds no pull-off; was 13 cut-backs)|input/block2d.opts|-bc_1_value -0.01 -contact_friction_mu 0.3
 plane normal pointing away from the body|input/block2d.opts|-contact_obstacle_0_normal 0,-1
 label value given twice (the load was applied twice)|input/block2d.opts|-bc_1_values 3,3
@@ -102,6 +115,8 @@ YAML options file that is a list|input/hertz2d.opts|-options_file_yaml @DIR@/lis
 YAML options file naming an options file (PETSc ignores it)|input/hertz2d.opts|-options_file_yaml @DIR@/named.yaml
 YAML options file including a missing file|input/hertz2d.opts|-options_file_yaml @DIR@/include.yaml
 YAML options file including itself|input/hertz2d.opts|-options_file_yaml @DIR@/self.yaml
+YAML key given twice (not valid YAML; PETSc let the later override the first, exit 0)|input/hertz2d.opts|-options_file_yaml @DIR@/twice.yaml
+YAML key given twice in a nested mapping|input/hertz2d.opts|-options_file_yaml @DIR@/twice_nested.yaml
 bc type unknown|input/hertz2d.opts|-bc_1_type force_field
 bc component out of range (2D)|input/hertz2d.opts|-bc_0_components 2
 bc component out of range (3D)|input/hertz3d.opts|-bc_0_components 3
@@ -170,8 +185,6 @@ box with a negative face count|input/block3d.opts|-dm_plex_box_faces 4,-1,4
 3D box with two face counts|input/block3d.opts|-dm_plex_box_faces 4,4
 box lower corner of one coordinate (was a PETSc error wall)|input/block2d.opts|-dm_plex_box_lower 0
 box upper corner of three coordinates in 2D|input/block2d.opts|-dm_plex_box_upper 1,1,1
-box of dimension 1|input/block2d.opts|-dm_plex_dim 1
-box of dimension 4 (was PETSc's "Dimension 4 should be in [1, 3]")|input/block2d.opts|-dm_plex_dim 4
 negative refinement (PETSc's line did not name the option)|input/block2d.opts|-dm_refine -1
 refinement beyond 32-bit indices (ran until the memory was gone)|input/block2d.opts|-dm_refine 20
 refinement beyond the memory (512 GiB at 1 KiB per dof, the least)|input/block2d.opts|-dm_refine 11
@@ -204,6 +217,40 @@ number option without its value (another option follows)|input/hertz2d.opts|-loa
 word option without its value (last on the line)|input/hertz2d.opts|-contact_method
 indexed option without its value|input/hertz2d.opts|-contact_obstacle_0_mu
 CASES
+}
+
+# A 2D gmsh mesh out of the x-y plane (QA helper 29): PETSc's reader keeps x and y and drops z, so
+# the unit square drawn in the x-z plane was refused as "degenerate (flat) cells" and one tilted
+# about x (z = y) was solved projected, exit 0. Now one line naming z, in gmsh 4.1 and 2.2, on 1
+# and 2 ranks; the same square in the plane z = 0.5 runs. A mesh of its edges alone (gmsh -1) is
+# refused as 1D (it was "degenerate (flat) cells")
+test_bad_input_mesh_out_of_plane() {
+  local rc=0 np name y z1 z2
+  printf -- '-bc_0_type dirichlet\n-bc_0_values 1\n-bc_1_type pressure\n-bc_1_values 3\n-bc_1_value 0.01\n' > "$CASE_DIR/el.opts"
+  for name in tilt:1:0:1 xz:0:0:1 lifted:1:0.5:0.5; do
+    IFS=: read -r name y z1 z2 <<<"$name"
+    {
+      echo "Point(1) = {0, 0, $z1, 0.25}; Point(2) = {1, 0, $z1, 0.25}; Point(3) = {1, $y, $z2, 0.25}; Point(4) = {0, $y, $z2, 0.25};"
+      echo "Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 1};"
+      echo "Curve Loop(1) = {1, 2, 3, 4}; Plane Surface(1) = {1}; Transfinite Surface{1}; Recombine Surface{1};"
+      echo "Physical Curve(1) = {1}; Physical Curve(2) = {2}; Physical Curve(3) = {3}; Physical Curve(4) = {4}; Physical Surface(10) = {1};"
+    } > "$CASE_DIR/$name.geo"
+    { gmsh -v 2 -2 -o "$CASE_DIR/$name.msh" "$CASE_DIR/$name.geo" && gmsh -v 2 -2 -format msh22 -o "$CASE_DIR/${name}22.msh" "$CASE_DIR/$name.geo"; } >/dev/null || { echo "gmsh failed on $name.geo"; return 1; }
+  done
+  gmsh -v 2 -1 -o "$CASE_DIR/lines.msh" "$CASE_DIR/lifted.geo" >/dev/null || { echo "gmsh failed on lifted.geo"; return 1; }
+  sed "s|@DIR@|$CASE_DIR|g" <<'CASES' | bad_input_cases || rc=1
+square in the x-z plane, gmsh 4.1 (was: degenerate (flat) cells)|@DIR@/el.opts|-mesh_file @DIR@/xz.msh
+square tilted about x, gmsh 4.1 (was: solved projected, exit 0)|@DIR@/el.opts|-mesh_file @DIR@/tilt.msh
+square tilted about x, gmsh 2.2|@DIR@/el.opts|-mesh_file @DIR@/tilt22.msh
+gmsh mesh of lines only (was: degenerate (flat) cells)|@DIR@/el.opts|-mesh_file @DIR@/lines.msh
+CASES
+  for np in 1 2; do
+    spc "$CASE_DIR/t$np.txt" $np -options_file "$CASE_DIR/el.opts" -mesh_file "$CASE_DIR/tilt.msh" -output_dir "$CASE_DIR" -output_name t$np
+    assert_eq "tilted mesh refused on $np rank(s)" "$(grep -c "^spcontact: error: -mesh_file $CASE_DIR/tilt.msh: a 2D mesh whose nodes leave the plane z = const (z from 0. to 1.)" "$CASE_DIR/t$np.txt")" 1 || rc=1
+    spc "$CASE_DIR/l$np.txt" $np -options_file "$CASE_DIR/el.opts" -mesh_file "$CASE_DIR/lifted22.msh" -output_dir "$CASE_DIR" -output_name l$np || rc=1
+    assert_eq "square at z = 0.5 runs on $np rank(s)" "$(sval "$CASE_DIR/l$np.txt" converged)" yes || rc=1
+  done
+  return $rc
 }
 
 # The same checks on 2 ranks for a subset (one line from rank 0, every rank stops)
@@ -241,8 +288,9 @@ CASES
 # A misspelt option is reported (one warning line per unused option) and the run is otherwise
 # the default one; -options_left false silences the report
 # The load-balance refusal on 1, 2 and 3 ranks (each rank sums the facets it owns): the same line;
-# and the free rigid translation (B1 with nothing fixing x: it used to give another displacement on
-# 3 ranks than on 1 and 2, each run exit 0)
+# the free rigid translation (B1 with nothing fixing x: it used to give another displacement on
+# 3 ranks than on 1 and 2, each run exit 0) and the free rigid rotation (each vertex counted at its
+# owner, so the same supports on every rank count)
 test_bad_input_balance_ranks() {
   local rc=0 np
   for np in 1 2 3; do
@@ -250,6 +298,26 @@ test_bad_input_balance_ranks() {
     assert_eq "balance refusal on $np rank(s)" "$(grep -c "^spcontact: error: the loads' net force at load factor 1 has a part (0.001, 0, 0) that no support can hold" "$CASE_DIR/b$np.txt")" 1 || rc=1
     spc "$CASE_DIR/t$np.txt" $np -options_file input/block2d.opts -bc_0_type pressure -bc_0_value 0 -output_dir "$CASE_DIR" -output_name t$np
     assert_eq "free translation refused on $np rank(s)" "$(grep -c "^spcontact: error: nothing holds the body against a rigid translation along (1, 0) (Dirichlet conditions fix no component; no frictionless plane's normal has a part along it)" "$CASE_DIR/t$np.txt")" 1 || rc=1
+    # a free rigid rotation (QA helper 29): the rollers' components swapped, 2D without contact,
+    # and in 3D on the faces of each other, the block on its plane; the same point and axis
+    spc "$CASE_DIR/r$np.txt" $np -options_file input/elastic2d.opts -dm_plex_box_faces 4,4 -bc_0_components 0 -bc_1_components 1 -output_dir "$CASE_DIR" -output_name r$np
+    assert_eq "free rotation refused on $np rank(s)" "$(grep -c "^spcontact: error: nothing holds the body against a rigid rotation about the point (0, 0): the Dirichlet conditions (on x, y) leave it free and there is no contact" "$CASE_DIR/r$np.txt")" 1 || rc=1
+    spc "$CASE_DIR/r3d$np.txt" $np -options_file input/block3d.opts -dm_plex_box_faces 4,4,4 -bc_0_values 3 -bc_1_values 6 -output_dir "$CASE_DIR" -output_name r3d$np
+    assert_eq "3D free rotation refused on $np rank(s)" "$(grep -c "^spcontact: error: nothing holds the body against a rigid rotation about the axis (0, 0, 1) through (0, 0, 0.5): the Dirichlet conditions (on x, y) leave it free, and so do the slave points on the frictionless planes" "$CASE_DIR/r3d$np.txt")" 1 || rc=1
+    # with contact pairs, whose forces are internal: the two blocks of the patch test with nothing
+    # holding x (exit 0 with 5, 86 and 61 Newton iterations on 1, 2 and 3 ranks), and with their
+    # rollers swapped (13 cut-backs, exit 2)
+    spc "$CASE_DIR/pt$np.txt" $np -options_file input/patch_4_5.opts -bc_1_type pressure -bc_1_value 0 -output_dir "$CASE_DIR" -output_name pt$np
+    assert_eq "pairs: free translation refused on $np rank(s)" "$(grep -c "^spcontact: error: nothing holds the body against a rigid translation along (1, 0) (Dirichlet conditions fix y; the contact pairs only pass forces between the bodies)" "$CASE_DIR/pt$np.txt")" 1 || rc=1
+    spc "$CASE_DIR/pr$np.txt" $np -options_file input/patch_4_5.opts -bc_0_components 0 -bc_1_components 1 -output_dir "$CASE_DIR" -output_name pr$np
+    assert_eq "pairs: free rotation refused on $np rank(s)" "$(grep -c "^spcontact: error: nothing holds the body against a rigid rotation about the point (0, 0): the Dirichlet conditions (on x, y) leave it free (the contact pairs only pass forces between the bodies)" "$CASE_DIR/pr$np.txt")" 1 || rc=1
+    # far from the origin (1000, 2000, 3000), the free rotation about x named at its place
+    spc "$CASE_DIR/rx$np.txt" $np -options_file input/elastic3d.opts -dm_plex_box_faces 3,3,3 -bc_0_components 1 -bc_1_components 2 -dm_plex_box_lower 1000,2000,3000 -dm_plex_box_upper 1001,2001,3001 -output_dir "$CASE_DIR" -output_name rx$np
+    assert_eq "free rotation about x far from the origin on $np rank(s)" "$(grep -c "^spcontact: error: nothing holds the body against a rigid rotation about the axis (1, 0, 0) through (1000.5, 2000, 3000): the Dirichlet conditions (on y, z, x) leave it free and there is no contact" "$CASE_DIR/rx$np.txt")" 1 || rc=1
+    # ... but the contact points count: B1 held in x on its top face turns about no point that
+    # its bottom, pressed on the plane, lets move
+    spc "$CASE_DIR/h$np.txt" $np -options_file input/block2d.opts -bc_0_values 3 -output_dir "$CASE_DIR" -output_name h$np -output_fields false || rc=1
+    assert_eq "rotation held by the contact on $np rank(s)" "$(sval "$CASE_DIR/h$np.txt" converged)" yes || rc=1
   done
   return $rc
 }
