@@ -5,7 +5,8 @@
 /* The range of the node coordinates of an ASCII gmsh file at its $Nodes section (r: min x, y, z,
    then max x, y, z); false if the section cannot be read (binary files: not looked at). PETSc's
    reader keeps dim coordinates of a 2D mesh and drops z, so a 2D mesh drawn out of the x-y plane
-   is read projected on it. */
+   is read projected on it. The scan stops once z spans more than 1e-3 of the extent so far: the
+   mesh is then 3D or plainly out of the plane, and a 3D mesh is not read through twice. */
 static PetscBool NodeRange(FILE *fp, int major, double r[6])
 {
   char line[256];
@@ -28,6 +29,7 @@ static PetscBool NodeRange(FILE *fp, int major, double r[6])
       for (int u = 0; param && u < dim; ++u)
         if (fscanf(fp, "%*f") != 0) return PETSC_FALSE;
       for (int d = 0; d < 3; ++d) r[d] = PetscMin(r[d], x[d]), r[3 + d] = PetscMax(r[3 + d], x[d]);
+      if (r[5] - r[2] > 1e-3 * PetscMax(r[3] - r[0], r[4] - r[1])) return PETSC_TRUE;
     }
   }
   return PETSC_TRUE;
