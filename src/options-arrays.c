@@ -1,8 +1,8 @@
 /* An array option given more values than it holds: PETSc's PetscOptions*Array keeps the first n
    and drops the rest without a word, so "-bc_1_ramp 0,1,2" ran as 0,1 and a 3D
    "-contact_obstacle_0_point 0,0,1,5" as 0,0,1. Each array read is followed by this check of the
-   given string's count of values (its commas; a range such as 1-3 counts as one, which never
-   refuses a valid option). */
+   given string's count of values (its commas). An integer range a-b (PETSc's a, ..., b-1) counts
+   as one: PETSc refuses a range longer than the array itself, so none is dropped. */
 #include <spcontact-impl.h>
 
 /* Collective: refuse option name (with its dash; prefix as in PetscOptionsBegin) given more than nmax values */

@@ -146,13 +146,48 @@ static PetscErrorCode CheckGlued(MPI_Comm comm, const char name[], const char sh
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Integer options: spcontact's by name (every PetscOptionsInt/IntArray name in src/, an indexed one
+   by its tail; checked by the test help_complete), PETSc's by their tails and MUMPS's controls */
+static const char *const IntNames[] = {"-load_steps", "-debug_interrupt_after_step", "-debug_error_on_rank", "-load_max_cutbacks", "-load_grow_after", "_values", "_components", "-contact_friction_max_flips", "-contact_shift_accel_depth", "-contact_chatter_flips", "-contact_alm_max", "-contact_regression_m", "_label_value", "-solver_jacobian_reuse", "-solver_direct_switch", "-solver_direct_switch_3d", "-solver_direct_dofs", "-solver_direct_dofs_3d", "-solver_stall_its"};
+
+static const char *const IntTails[] = {"_max_it", "_max_funcs", "_max_fail", "_max_linear_solve_fail", "_restart", "_nsmooths", "_square_graph", "_lag_preconditioner", "_lag_jacobian", "_levels", "_refine", "_refine_pre", "_refine_hierarchy", "_faces", "_dim", "_eq_limit"};
+
+static PetscBool IsInt(const char name[])
+{
+  for (size_t k = 0; k < PETSC_STATIC_ARRAY_LENGTH(IntNames); ++k)
+    if (IntNames[k][0] == '-' ? !strcmp(name, IntNames[k]) : HasTail(name, IntNames + k, 1)) return PETSC_TRUE;
+  return HasTail(name, IntTails, PETSC_STATIC_ARRAY_LENGTH(IntTails)) || !strncmp(name, "-mat_mumps_icntl_", 17) ? PETSC_TRUE : PETSC_FALSE;
+}
+
+/* Refused if name is an integer option and a run of digits in its value (a number, an element of
+   its comma list, an end of a range a-b) is larger than PetscInt holds: PETSc reads it with strtol
+   and casts, so "-load_steps 4294967298" ran 2 load steps, "-dm_refine 4294967296" refined 0 times,
+   and 99999999999999999999 became -1 */
+static PetscErrorCode CheckIntRange(MPI_Comm comm, const char name[], const char shown[], const char rest[])
+{
+  const char  *v = rest + 1;
+  const size_t n = strcspn(v, " ");
+
+  PetscFunctionBeginUser;
+  if (!HasValue(rest) || !IsInt(name)) PetscFunctionReturn(PETSC_SUCCESS);
+  for (size_t i = 0; i < n;) {
+    double d = 0; /* the digits' value, exact far enough past PETSC_MAX_INT to compare */
+    size_t j = i;
+    for (; j < n && isdigit((unsigned char)v[j]); ++j) d = 10 * d + (v[j] - '0');
+    PetscCheck(d <= PETSC_MAX_INT, comm, PETSC_ERR_USER_INPUT, "%s %.*s: %.*s is larger than the largest integer of this PETSc build (%" PetscInt_FMT "), which would read it as another number; give a smaller value", shown, (int)n, v, (int)(j - i), v + i, PETSC_MAX_INT);
+    i = j > i ? j : i + 1;
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* Collective, before the set-up reads any option: values joined by '=', PETSc's named values in
-   numeric options */
+   numeric options, integers out of PetscInt's range */
 PetscErrorCode SPOptionsCheckNamedValues(MPI_Comm comm)
 {
   PetscFunctionBeginUser;
   PetscCall(ForEachOption(comm, CheckGlued));
   PetscCall(ForEachOption(comm, CheckNamed));
+  PetscCall(ForEachOption(comm, CheckIntRange));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

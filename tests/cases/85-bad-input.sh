@@ -500,7 +500,14 @@ test_bad_input_value_names_option() {
 -bc_0_label top -contact_two_pass top|-contact_two_pass top: not true or false
 -contact_obstacle_0_point 0,DEFAULT|-contact_obstacle_0_point 0,DEFAULT: its element DEFAULT is a named PETSc value, read as the number -2 here, not as a default; leave the option out for its default (-help shows it), or give a number
 -material_E Decide|-material_E Decide: Decide is a named PETSc value, read as the number -1 here, not as a default; leave the option out for its default (-help shows it), or give a number
+-load_steps 4294967298|-load_steps 4294967298: 4294967298 is larger than the largest integer of this PETSc build (2147483647), which would read it as another number; give a smaller value
+-dm_refine 4294967296|-dm_refine 4294967296: 4294967296 is larger than the largest integer of this PETSc build (2147483647), which would read it as another number; give a smaller value
+-contact_values 1-4294967297|-contact_values 1-4294967297: 4294967297 is larger than the largest integer of this PETSc build (2147483647), which would read it as another number; give a smaller value
+-snes_max_it -99999999999999999999|-snes_max_it -99999999999999999999: 99999999999999999999 is larger than the largest integer of this PETSc build (2147483647), which would read it as another number; give a smaller value
 CASES
+  # a real option with an integer's digits past that range runs (E in Pa)
+  spc "$CASE_DIR/bigE.txt" 1 -options_file input/block2d.opts -material_E 210000000000 -output_dir "$CASE_DIR/bigE" || rc=1
+  assert_eq "real option with 12 digits converges" "$(sval "$CASE_DIR/bigE.txt" converged)" yes || rc=1
   # a space inside a quoted value: the option holding it is named, not another with the value 0
   printf -- '-material_nu 0\n-contact_obstacle_0_point "0,0 "\n' >"$CASE_DIR/space.opts"
   timeout 60 $SPC -options_file input/hertz2d.opts -options_file "$CASE_DIR/space.opts" -output_dir "$CASE_DIR" >/dev/null 2>"$CASE_DIR/e.txt"; code=$?

@@ -100,6 +100,15 @@ test_help_complete() {
   for o in $(grep -rhoE 'PetscOptionsBool\((NULL, *[A-Za-z"_]*, *|PetscOptionsObject, *)?"-[A-Za-z0-9_]+"' src/ | grep -oE '"-[A-Za-z0-9_]+"' | tr -d '"' | sort -u); do
     grep -qE "\"($o|_${o#-})\"" src/options-values.c || { echo "flag $o not in src/options-values.c FAILED"; missing=1; }
   done
+  # ... and it checks the range of integer options: its lists must name every integer option read
+  # in src/ (an indexed one by a tail)
+  local tails
+  tails=$(grep -E '^static const char \*const Int' src/options-values.c | grep -oE '"[-_][A-Za-z0-9_]+"' | tr -d '"')
+  for o in $(grep -rhoE 'PetscOptions(Get)?Int(Array)?\((NULL, *[A-Za-z"_]*, *|PetscOptionsObject, *)?"-[A-Za-z0-9_]+"' src/ | grep -oE '"-[A-Za-z0-9_]+"' | tr -d '"' | sort -u); do
+    local hit=0 t
+    for t in $tails; do { [ "$t" = "$o" ] || [ "$t" = "_${o#-}" ] || { [ "${t#_}" != "$t" ] && [ "${o%"$t"}" != "$o" ]; }; } && hit=1; done
+    [ $hit -eq 1 ] || { echo "integer option $o not in src/options-values.c FAILED"; missing=1; }
+  done
   [ $missing -eq 0 ] && echo "every option in -help and README ok" || rc=1
   # defaults that are not one number are named, not shown as a value the run refuses (0., -1.)
   assert_eq "-help: penalty, gap tol, radius defaults" "$(grep -oE '^ *-contact_(penalty|gap_tol|obstacle_0_radius) <[^>]*>' "$CASE_DIR/help_opts.txt" | tr -s ' ' | tr '\n' ';')" " -contact_penalty <alpha E / h>; -contact_gap_tol <gap_rtol x h_c>; -contact_obstacle_0_radius <none: give it>;" || rc=1
