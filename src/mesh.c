@@ -1,4 +1,5 @@
 /* Mesh: read gmsh (or build a PETSc box mesh), partition (METIS by default), distribute. */
+#include <ctype.h>
 #include <spcontact-impl.h>
 #include <kernels/tensor.h>
 
@@ -410,6 +411,7 @@ PetscErrorCode SPMeshCreate(MPI_Comm comm, DM *dm)
   PetscCall(PetscOptionsString("-mesh_file", "gmsh .msh file; without it a PETSc box mesh is built from -dm_plex_box_* options", "SPMeshCreate", file, file, sizeof(file), NULL));
   PetscCall(PetscOptionsString("-mesh_partitioner", "Partitioner: metis (METIS 5 k-way, default), ptscotch, simple", "SPMeshCreate", partitioner, partitioner, sizeof(partitioner), NULL));
   PetscOptionsEnd();
+  for (char *c = partitioner; *c; ++c) *c = (char)tolower((unsigned char)*c); /* any case, as PETSc's lists */
   if (file[0]) {
     PetscCall(ReadMesh(comm, file, dm));
     PetscCall(CheckDimension(comm, file, *dm));

@@ -15,16 +15,18 @@ static const SPMaterialLaw SPMaterialLaws[] = {
 };
 #define SP_NLAWS ((PetscInt)(sizeof(SPMaterialLaws) / sizeof(SPMaterialLaws[0])))
 
-/* The law of a material; NULL if the name is unknown. `list` receives the known names. */
-static PetscErrorCode FindLaw(const char name[], const SPMaterialLaw **law, char list[], size_t len)
+/* The law of a material, its name in any case as PETSc's lists (-contact_method) take theirs, and
+   then spelt as the law's; NULL if the name is unknown. `list` receives the known names. */
+static PetscErrorCode FindLaw(char name[], const SPMaterialLaw **law, char list[], size_t len)
 {
   PetscFunctionBeginUser;
   *law    = NULL;
   list[0] = 0;
   for (PetscInt i = 0; i < SP_NLAWS; ++i) {
     PetscBool match;
-    PetscCall(PetscStrcmp(name, SPMaterialLaws[i].name, &match));
+    PetscCall(PetscStrcasecmp(name, SPMaterialLaws[i].name, &match));
     if (match) *law = &SPMaterialLaws[i];
+    if (match) PetscCall(PetscStrcpy(name, SPMaterialLaws[i].name)); /* no longer: both buffers hold any law's name */
     if (i) PetscCall(PetscStrlcat(list, ", ", len));
     PetscCall(PetscStrlcat(list, SPMaterialLaws[i].name, len));
   }
