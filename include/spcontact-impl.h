@@ -151,6 +151,7 @@ PETSC_EXTERN const SPMethod SPMethodPenalty, SPMethodShifted, SPMethodShiftedReg
 
 /* A contact pair: slave and master surfaces, label values of one label (contact-pairs.c) */
 #define SP_MAX_PAIRS 8 /* user pairs per run (-contact_pair_0_.. ); -contact_two_pass mirrors them */
+#define SP_RTOL_MIN  1e-15 /* the finest relative contact tolerance (gap, creep, slip shift): about 5 round-offs of double precision */
 typedef struct {
   char      label[PETSC_MAX_PATH_LEN];
   PetscInt  nslave, slave[SP_MAX_VALUES], nmaster, master[SP_MAX_VALUES];

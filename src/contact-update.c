@@ -754,12 +754,11 @@ PetscErrorCode SPContactHasPairs(SPContact c, PetscBool *on)
 
 /* The contact length scale h_c: the smallest mean slave facet size at a contact point (the mesh
    size where contact is resolved; a minimum, so the same on any rank count). The gap tolerance is
-   gap_rtol x h_c unless -contact_gap_tol gave an absolute one. It must be at least SP_GAP_RTOL_MIN
+   gap_rtol x h_c unless -contact_gap_tol gave an absolute one. It must be at least SP_RTOL_MIN
    x h_c, about 5 round-offs of a coordinate of the facet's size: below it a gap is not resolved in
    double precision, and the solve stalled (B1 at 1e-20: 15 Newton iterations at round-off, then
    cut-backs and exit 2 with advice about the shift update; every 2D benchmark converges at 1e-15).
    Collective, once, after the areas. */
-#define SP_GAP_RTOL_MIN 1e-15
 PetscErrorCode SPContactSetGapTolerance(SPContact c)
 {
   MPI_Comm  comm = PetscObjectComm((PetscObject)c->dm);
@@ -769,7 +768,7 @@ PetscErrorCode SPContactSetGapTolerance(SPContact c)
   for (PetscInt i = 0; i < c->n; ++i) hmin = PetscMin(hmin, c->pt[i].h);
   PetscCallMPI(MPI_Allreduce(&hmin, &c->lengthScale, 1, MPIU_REAL, MPI_MIN, comm));
   if (!c->gapTolSet) c->gapTol = c->gapRtol * c->lengthScale;
-  if (c->method->timing == SP_UPDATE_NONE || c->lengthScale == PETSC_MAX_REAL || c->gapTol >= SP_GAP_RTOL_MIN * c->lengthScale) PetscFunctionReturn(PETSC_SUCCESS); /* penalty: no gap test */
-  if (c->gapTolSet) SETERRQ(comm, PETSC_ERR_USER_INPUT, "-contact_gap_tol %g: below %g of the contact facet size h_c = %g, finer than double precision resolves a gap; give at least %g", (double)c->gapTol, SP_GAP_RTOL_MIN, (double)c->lengthScale, SP_GAP_RTOL_MIN * (double)c->lengthScale);
-  SETERRQ(comm, PETSC_ERR_USER_INPUT, "-contact_gap_rtol %g: below %g, finer than double precision resolves a gap (a fraction of the contact facet size h_c = %g); give at least %g", (double)c->gapRtol, SP_GAP_RTOL_MIN, (double)c->lengthScale, SP_GAP_RTOL_MIN);
+  if (c->method->timing == SP_UPDATE_NONE || c->lengthScale == PETSC_MAX_REAL || c->gapTol >= SP_RTOL_MIN * c->lengthScale) PetscFunctionReturn(PETSC_SUCCESS); /* penalty: no gap test */
+  if (c->gapTolSet) SETERRQ(comm, PETSC_ERR_USER_INPUT, "-contact_gap_tol %g: below %g of the contact facet size h_c = %g, finer than double precision resolves a gap; give at least %g", (double)c->gapTol, SP_RTOL_MIN, (double)c->lengthScale, SP_RTOL_MIN * (double)c->lengthScale);
+  SETERRQ(comm, PETSC_ERR_USER_INPUT, "-contact_gap_rtol %g: below %g, finer than double precision resolves a gap (a fraction of the contact facet size h_c = %g); give at least %g", (double)c->gapRtol, SP_RTOL_MIN, (double)c->lengthScale, SP_RTOL_MIN);
 }

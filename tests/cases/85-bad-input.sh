@@ -151,6 +151,7 @@ gap rtol negative|input/hertz2d.opts|-contact_gap_rtol -1
 gap tol zero|input/hertz2d.opts|-contact_gap_tol 0
 gap rtol below round-off (1e-16: 15 Newton iterations at round-off, cut-backs, exit 2)|input/hertz2d.opts|-contact_gap_rtol 1e-16
 gap tol below round-off of the facet size|input/hertz2d.opts|-contact_gap_tol 1e-20
+creep rtol below round-off (1e-20: stalled at round-off, cut-backs, exit 2)|input/friction_block2d.opts|-contact_friction_creep_rtol 1e-20
 cut-back budget negative|input/hertz2d.opts|-load_max_cutbacks -1
 minimum increment above 1|input/hertz2d.opts|-load_min_increment 2
 minimum increment not below the load step (no cut-back possible)|input/hertz2d.opts|-load_steps 2 -load_min_increment 0.6
