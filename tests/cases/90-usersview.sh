@@ -120,7 +120,7 @@ test_help_complete() {
 # each with exit code 0 and the summary of a direct run with the same options (displacement_max,
 # newton_iterations); the SLURM scripts pass `bash -n`.
 test_sweep_local() {
-  local rc=0 csv=$CASE_DIR/sw/sweep.csv
+  local rc=0 csv=$CASE_DIR/sw/sweep.csv code
   RERUN="scripts/sweep --out $CASE_DIR/sw input/block2d.opts -contact_method penalty,shifted -contact_alpha 10,100"
   timeout 600 scripts/sweep --out "$CASE_DIR/sw" input/block2d.opts -contact_method penalty,shifted -contact_alpha 10,100 >"$CASE_DIR/sweep.txt" 2>&1 || { echo "sweep failed"; cat "$CASE_DIR/sweep.txt"; return 1; }
   cat "$csv" | cut -c1-120
@@ -134,6 +134,21 @@ test_sweep_local() {
     assert_eq "case4_$key" "$(sed -n 5p "$csv" | cut -d, -f"$col")" "$(sval "$CASE_DIR/direct.txt" "$key")" || rc=1
   done
   bash -n scripts/sweep-array.sbatch && bash -n scripts/job.sbatch && echo "sbatch scripts: bash -n ok" || { echo "sbatch syntax FAILED"; rc=1; }
+  # bad arguments: one line each, exit 1, no case run (--np 0 ran the case; a missing file was
+  # reported as no file given)
+  local args want
+  while IFS='|' read -r args want; do
+    # shellcheck disable=SC2086
+    scripts/sweep --out "$CASE_DIR/bad" $args >"$CASE_DIR/bad.txt" 2>&1; code=$?
+    assert_eq "sweep $args: exit code" "$code" 1 || rc=1
+    assert_eq "sweep $args: message" "$(cat "$CASE_DIR/bad.txt")" "sweep: error: $want" || rc=1
+  done <<'CASES'
+--np 0 input/block2d.opts -contact_alpha 10|--np 0: give a number of ranks >= 1
+input/nosuch.opts -contact_alpha 10|input/nosuch.opts: no such options file (scripts/sweep F.opts -opt v1,v2 ...)
+-contact_alpha 10|give an options file first (scripts/sweep F.opts -opt v1,v2 ...)
+input/block2d.opts|no sweep axis (-option v1,v2,...)
+CASES
+  [ ! -e "$CASE_DIR/bad/case_1" ] && echo "no case run on bad arguments ok" || { echo "a case ran FAILED"; rc=1; }
   return $rc
 }
 
