@@ -155,7 +155,7 @@ CASES
 # scripts/convert-mesh: the B2 gmsh mesh written as Abaqus .inp by meshio (its physical groups as
 # *ELSETs "1", "2", "3", "10"), converted back, runs B2 with the figures of the gmsh original.
 test_convert_mesh_inp() {
-  local rc=0 d=$CASE_DIR
+  local rc=0 d=$CASE_DIR code
   "$PYTHON" - "$d/hertz2d.inp" <<'PY' || return 1
 import sys
 import meshio
@@ -175,6 +175,16 @@ PY
   spc "$d/conv.txt" 1 -options_file input/hertz2d.opts -mesh_file "$d/hertz2d_conv.msh" -quiet -output_dir "$d/c" || rc=1
   same_summary "$d/orig.txt" "$d/conv.txt" 1e-10 vertices cells contact_points newton_iterations displacement_max \
     contact_force_y contact_peak_pressure contact_radius contact_max_penetration || rc=1
+  # a file meshio reads as empty, and a write that fails: one line each, exit 1, no output file
+  # (the first ended in a Python traceback)
+  echo garbage >"$d/garbage.inp"
+  scripts/convert-mesh "$d/garbage.inp" "$d/g.msh" >"$d/g.txt" 2>&1; code=$?
+  assert_eq "empty mesh: exit code" "$code" 1 || rc=1
+  assert_eq "empty mesh: message" "$(cat "$d/g.txt")" "convert-mesh: error: $d/garbage.inp: meshio read no points from it; check that it is a mesh file of its format" || rc=1
+  scripts/convert-mesh "$d/hertz2d.inp" "$d/nodir/x.msh" >"$d/w.txt" 2>&1; code=$?
+  assert_eq "failed write: exit code" "$code" 1 || rc=1
+  assert_eq "failed write: one error line" "$(grep -c '^convert-mesh: error: cannot write' "$d/w.txt") $(grep -c Traceback "$d/w.txt")" "1 0" || rc=1
+  [ ! -e "$d/g.msh" ] && [ ! -e "$d/nodir" ] && echo "no output file ok" || { echo "output file left FAILED"; rc=1; }
   return $rc
 }
 
