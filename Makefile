@@ -26,7 +26,7 @@ MSH  := $(GEO:input/%.geo=build/mesh/%.msh)
 UNIT := $(patsubst tests/unit/%.c,bin/%,$(wildcard tests/unit/*.c))
 LIBOBJ := $(filter-out build/src/main.o,$(OBJ))
 
-.PHONY: all deps run check clean meshes petsc-found unit
+.PHONY: all deps run check clean meshes petsc-found unit FORCE
 all: deps
 	@$(MAKE) --no-print-directory bin/spcontact $(UNIT) meshes
 
@@ -35,6 +35,15 @@ deps:
 
 petsc-found:
 	@pkg-config --exists PETSc || { echo "error: PETSc not found by pkg-config (module PETSc). Install Debian's petsc-dev (make deps) or set PETSC_DIR/PETSC_ARCH to your PETSc build." >&2; exit 1; }
+
+# The code's version (git describe; "unknown" outside a git checkout) for -version and the summary:
+# build/version.h is rewritten only when it changes, so only main.o and app.o follow it
+VERSION := $(shell git describe --always --dirty 2>/dev/null || echo unknown)
+build/version.h: FORCE
+	@mkdir -p build; v='#define SP_VERSION "$(VERSION)"'; [ "$$(cat $@ 2>/dev/null)" = "$$v" ] || echo "$$v" >$@
+build/src/main.o build/src/app.o: build/version.h
+build/src/main.o build/src/app.o: CPPFLAGS += -Ibuild
+FORCE:
 
 bin/spcontact: $(OBJ) | petsc-found
 	@mkdir -p bin

@@ -1,5 +1,6 @@
 /* The application: owns every module object; create, set up, run, summarise, destroy. */
 #include <spcontact-impl.h>
+#include <version.h>
 
 PetscErrorCode SPAppCreate(MPI_Comm comm, SPApp *app)
 {
@@ -231,6 +232,7 @@ PetscErrorCode SPAppSummary(SPApp a)
   PetscCall(SPOutputGetPrefix(a->output, &prefix));
   PetscCall(PetscTime(&t1));
   PetscCall(PetscViewerASCIIPrintf(v, "=== spcontact summary ===\n"));
+  PetscCall(PetscViewerASCIIPrintf(v, "spcontact_version %s\n", SP_VERSION));
   PetscCall(MeshSummary(a, v));
   PetscCall(PetscViewerASCIIPrintf(v, "status %s\n", RunStatus(a)));
   PetscCall(PetscViewerASCIIPrintf(v, "converged %s\nload_steps %" PetscInt_FMT "\ncutbacks %" PetscInt_FMT "\nload_factor %g\n", a->converged ? "yes" : "no", a->stepsDone, a->cutbacks, (double)a->loadReached));

@@ -3,11 +3,13 @@ static const char help[] = "spcontact: parallel FEM contact mechanics with the s
 
 #define _POSIX_C_SOURCE 200112L /* setenv */
 #include <ctype.h>
+#include <signal.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
 #include <unistd.h>
 #include <spcontact.h>
+#include <version.h>
 
 /* Open MPI started without mpiexec (a singleton: OMPI_COMM_WORLD_SIZE unset) spent 0.35 s of B2's
    0.7 s in MPI_Init: probing network transports (UCX) and starting a runtime daemon, neither of
@@ -195,15 +197,41 @@ static PetscErrorCode Run(int *code)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Before PetscInitialize: -version (or --version) prints spcontact's version and PETSc's and exits
+   (PETSc's own -version printed PETSc's and then ran a default box to an error); --help and -h
+   are -help; no arguments at all (and no PETSC_OPTIONS, PETSC_OPTIONS_YAML or .petscrc to take
+   options from) is a usage line, where a default box ran into "nothing holds the body". Returns
+   the exit code, or -1 to go on. */
+static int EarlyArguments(int argc, char **argv)
+{
+  static char helpArg[] = "-help";
+
+  if (argc == 1 && !getenv("PETSC_OPTIONS") && !getenv("PETSC_OPTIONS_YAML") && access(".petscrc", F_OK)) {
+    fprintf(stderr, "spcontact: error: no problem given: run spcontact -options_file FILE.opts (the cases of input/, e.g. input/hertz2d.opts; the README's quick start); spcontact -help lists every option\n");
+    return 1;
+  }
+  for (int i = 1; i < argc; ++i) {
+    if (!strcmp(argv[i], "-version") || !strcmp(argv[i], "--version")) {
+      printf("spcontact %s (PETSc %d.%d.%d)\n", SP_VERSION, PETSC_VERSION_MAJOR, PETSC_VERSION_MINOR, PETSC_VERSION_SUBMINOR);
+      return 0;
+    }
+    if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) argv[i] = helpArg;
+  }
+  return -1;
+}
+
 int main(int argc, char **argv)
 {
   PetscErrorCode ierr;
   int            code    = 2;
   OneLineError   oneLine = {"", 0};
 
+  if ((code = EarlyArguments(argc, argv)) >= 0) return code;
+  code = 2;
   if (SPCheckOptionsFiles(argc, argv)) return 1; /* before PetscInitialize reads them */
   SingletonMPI();
   PetscCall(PetscInitialize(&argc, &argv, NULL, help));
+  (void)signal(SIGPIPE, SIG_DFL); /* a closed stdout (spcontact -help | head) ends the process quietly, as for any Unix tool; PETSc's handler printed an error wall and MPI_ABORT */
   PetscCall(PetscPushErrorHandler(ErrorHandler, &oneLine));
   ierr = Run(&code);
   if (ierr == PETSC_ERR_FILE_WRITE) { /* an output write failed: its h5 cannot be closed, and */

@@ -260,3 +260,28 @@ test_names_any_case() {
   done
   return $rc
 }
+
+# What a user types first: -version (and --version) prints spcontact's version (build/version.h,
+# from git describe) and PETSc's, the same as the summary's spcontact_version, and exits 0 (it
+# printed PETSc's banner and then ran a default box to an error); no arguments at all is one usage
+# line and exit 1 (a default box ran into "nothing holds the body"); --help and -h are -help;
+# -help piped into head ends quietly (PETSc's SIGPIPE handler printed an error wall)
+test_version_and_usage() {
+  local rc=0 ver code
+  ver=$(sed -n 's/^#define SP_VERSION "\(.*\)"$/\1/p' build/version.h)
+  assert_eq "-version" "$($SPC -version)" "spcontact $ver (PETSc $(pkg-config --modversion PETSc))" || rc=1
+  assert_eq "--version" "$($SPC --version)" "$($SPC -version)" || rc=1
+  spc "$CASE_DIR/b1.txt" 1 -options_file input/block2d.opts -output_dir "$CASE_DIR/o" || rc=1
+  assert_eq "summary spcontact_version" "$(sval "$CASE_DIR/b1.txt" spcontact_version)" "$ver" || rc=1
+  (cd "$CASE_DIR" && env -u PETSC_OPTIONS "$OLDPWD/$SPC" >out.txt 2>err.txt); code=$?
+  assert_eq "no arguments: exit code" "$code" 1 || rc=1
+  assert_eq "no arguments: one usage line" "$(cat "$CASE_DIR/out.txt") $(grep -c '^spcontact: error: no problem given: run spcontact -options_file FILE.opts' "$CASE_DIR/err.txt") $(wc -l <"$CASE_DIR/err.txt")" " 1 1" || rc=1
+  for h in --help -h; do
+    (cd "$CASE_DIR" && "$OLDPWD/$SPC" $h >"h$h.txt" 2>&1); code=$?
+    assert_eq "$h: exit code" "$code" 0 || rc=1
+    assert_eq "$h lists the options" "$(grep -c '^ *-contact_method' "$CASE_DIR/h$h.txt")" 1 || rc=1
+  done
+  (cd "$CASE_DIR" && "$OLDPWD/$SPC" -help 2>pipe_err.txt | head -1 >/dev/null; echo "${PIPESTATUS[0]}" >pipe_code.txt)
+  assert_eq "-help | head: killed by SIGPIPE, nothing on stderr" "$(cat "$CASE_DIR/pipe_code.txt") $(wc -c <"$CASE_DIR/pipe_err.txt")" "141 0" || rc=1
+  return $rc
+}
