@@ -99,6 +99,10 @@ static int CheckLine(const char *text, int number, const Where *w)
   char  line[MAX_LINE], *tok[4], why[MAX_LINE + 64] = "";
   int   n, alias;
 
+  if (number == 1 && !strncmp(text, "\xef\xbb\xbf", 3)) { /* PETSc would read it as part of the first token */
+    if (w->loud) fprintf(stderr, "spcontact: error: %s starts with a UTF-8 byte-order mark (written by some editors), which PETSc reads as part of its first line; save it without one (sed -i '1s/^\\xEF\\xBB\\xBF//' %s)\n", w->from, w->from);
+    return 1;
+  }
   snprintf(line, sizeof(line), "%s", text);
   line[strcspn(line, "#")] = 0;
   for (char *c = line; *c; ++c)

@@ -19,6 +19,7 @@ test_bad_input_catalogue() {
   printf -- '-load_steps 1\n-bc_1_value 0.0015, 0.001 # a value with a space, unquoted\n' > "$CASE_DIR/twovalues.opts"
   printf -- '-load_steps 1 -output_fields false\n' > "$CASE_DIR/twoopts.opts"
   printf -- '-contact_method=alm\n' > "$CASE_DIR/glued.opts"
+  { printf '\xef\xbb\xbf'; cat input/block2d.opts; } > "$CASE_DIR/bom.opts"
   printf 'contact:\n  method: [alm\n' > "$CASE_DIR/unclosed.yaml"
   printf -- '- load_steps\n- 2\n' > "$CASE_DIR/list.yaml"
   printf 'options_file: input/hertz2d.opts\n' > "$CASE_DIR/named.yaml"
@@ -72,6 +73,7 @@ B2 with nothing fixing x (was exit 0 on 1 and 3 ranks, cut-backs on 2)|input/her
 elasticity without contact and nothing fixing y|@DIR@/nocontact.opts|-bc_1_type traction -bc_1_value 0,0
 value joined to its option by = (was the default method, exit 0, one warning at the end)|input/hertz2d.opts|-contact_method=alm
 value joined by = in an options file|input/hertz2d.opts|-options_file @DIR@/glued.opts
+options file with a UTF-8 byte-order mark (its first line was named as starting with an invisible character)|input/hertz2d.opts|-options_file @DIR@/bom.opts
 numeric PETSc option joined by =|input/hertz2d.opts|-ksp_rtol=1e-3
 1D box (was a 1D run to exit 0)|input/elastic2d.opts|-dm_plex_dim 1
 4D box (was PETSc's "Dimension 4 should be in [1, 3]")|input/elastic2d.opts|-dm_plex_dim 4
