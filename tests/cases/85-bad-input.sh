@@ -216,7 +216,30 @@ creep tolerance infinite|input/friction_block2d.opts|-contact_friction_creep_rto
 number option without its value (another option follows)|input/hertz2d.opts|-load_steps -quiet
 word option without its value (last on the line)|input/hertz2d.opts|-contact_method
 indexed option without its value|input/hertz2d.opts|-contact_obstacle_0_mu
+pair on one body's facets, that body held in x only (was: 13 cut-backs, exit 2)|input/patch_4_5.opts|-contact_pair_0_slave_values 4 -contact_pair_0_master_values 3
+a second body with no condition and in no pair (was: 13 cut-backs, exit 2)|input/hertz2d_twobody.opts|-bc_0_values 6 -contact_pair_0_slave_values 5
 CASES
+}
+
+# Each body held on its own (QA helper 30): bc-balance.c checks the mesh as one assembly, so a body
+# that the contact pairs do not link to a held one passed and its solve stalled into the cut-backs
+# (13 cut-backs, exit 2, in each case below). The bodies are the connected cells; the line is the
+# same on 1, 2 and 3 ranks. The patch test's upper block with the pair on its own facets (held in x
+# only); B6's disc with no condition and in no pair; the patch mesh without contact, its upper block
+# free under a pressure; both blocks held run (the shipped pair cases: tests pairs, patch)
+test_bad_input_free_body_ranks() {
+  local rc=0 np
+  for np in 1 2 3; do
+    spc "$CASE_DIR/p$np.txt" $np -options_file input/patch_4_5.opts -contact_pair_0_slave_values 4 -contact_pair_0_master_values 3 -output_dir "$CASE_DIR" -output_name p$np
+    assert_eq "body held in x only refused on $np rank(s)" "$(grep -c "^spcontact: error: nothing holds the body in the box (0, 0.5)..(1, 1) (15 cells): its Dirichlet conditions leave it free to move along (0, 1), and no contact pair names its facets" "$CASE_DIR/p$np.txt")" 1 || rc=1
+    spc "$CASE_DIR/d$np.txt" $np -options_file input/hertz2d_twobody.opts -bc_0_values 6 -contact_pair_0_slave_values 5 -output_dir "$CASE_DIR" -output_name d$np
+    assert_eq "disc held by nothing refused on $np rank(s)" "$(grep -c "^spcontact: error: nothing holds the body in the box (0, 0)..(1, 1) (9580 cells): no Dirichlet condition acts on it and there is no obstacle, and no contact pair names its facets" "$CASE_DIR/d$np.txt")" 1 || rc=1
+    spc "$CASE_DIR/n$np.txt" $np -mesh_file build/mesh/patch_4_5.msh -bc_0_type dirichlet -bc_0_values 1 -bc_0_components 0,1 -bc_1_type pressure -bc_1_values 4 -bc_1_value 0.01 -output_dir "$CASE_DIR" -output_name n$np
+    assert_eq "free block without contact refused on $np rank(s)" "$(grep -c "^spcontact: error: nothing holds the body in the box (0, 0.5)..(1, 1) (15 cells): no Dirichlet condition acts on it and there is no obstacle, and there are no contact pairs" "$CASE_DIR/n$np.txt")" 1 || rc=1
+  done
+  spc "$CASE_DIR/ok.txt" 2 -mesh_file build/mesh/patch_4_5.msh -bc_0_type dirichlet -bc_0_values 1,4 -bc_0_components 0,1 -bc_1_type pressure -bc_1_values 6 -bc_1_value 0.01 -output_dir "$CASE_DIR" -output_name ok -output_fields false || rc=1
+  assert_eq "both blocks held, no contact: runs" "$(sval "$CASE_DIR/ok.txt" converged)" yes || rc=1
+  return $rc
 }
 
 # A 2D gmsh mesh out of the x-y plane (QA helper 29): PETSc's reader keeps x and y and drops z, so
