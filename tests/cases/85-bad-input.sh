@@ -26,6 +26,9 @@ test_bad_input_catalogue() {
   printf '$$me: !include %s/self.yaml\n' "$CASE_DIR" > "$CASE_DIR/self.yaml"
   printf 'contact:\n  method: alm\n  alpha: 100\nload_steps: 2\ncontact:\n  method: penalty\n' > "$CASE_DIR/twice.yaml"
   printf 'contact:\n  method: alm\n  method: penalty\n' > "$CASE_DIR/twice_nested.yaml"
+  printf 'contact_method: alm\n-contact_method: penalty\n' > "$CASE_DIR/dash.yaml"
+  printf 'contact_method: alm\nContact_Method: penalty\n' > "$CASE_DIR/case.yaml"
+  printf 'contact:\n  method: alm\n  alpha: 100\ncontact_method: penalty\n' > "$CASE_DIR/joined.yaml"
   sed -e "s|@DIR@|$CASE_DIR|g" -e "s|@LONG@|$(printf 'x%.0s' {1..300})|" <<'CASES' | bad_input_cases
 contact label on cells|input/hertz2d.opts|-contact_label "Cell Sets" -contact_values 1
 contact value without points|input/hertz2d.opts|-contact_values 99
@@ -117,6 +120,9 @@ YAML options file including a missing file|input/hertz2d.opts|-options_file_yaml
 YAML options file including itself|input/hertz2d.opts|-options_file_yaml @DIR@/self.yaml
 YAML key given twice (not valid YAML; PETSc let the later override the first, exit 0)|input/hertz2d.opts|-options_file_yaml @DIR@/twice.yaml
 YAML key given twice in a nested mapping|input/hertz2d.opts|-options_file_yaml @DIR@/twice_nested.yaml
+YAML key with the option's dash (PETSc read --contact_method: the other spelling ran, exit 0)|input/hertz2d.opts|-options_file_yaml @DIR@/dash.yaml
+YAML option in two cases (the later silently won, exit 0)|input/hertz2d.opts|-options_file_yaml @DIR@/case.yaml
+YAML option nested and joined (the later silently won, exit 0)|input/hertz2d.opts|-options_file_yaml @DIR@/joined.yaml
 bc type unknown|input/hertz2d.opts|-bc_1_type force_field
 bc component out of range (2D)|input/hertz2d.opts|-bc_0_components 2
 bc component out of range (3D)|input/hertz3d.opts|-bc_0_components 3
