@@ -254,13 +254,13 @@ static PetscErrorCode Refuse(DM dm, SPContact c, PetscInt dim, const SPGroupInfo
   else if (trans) {
     char dir[64];
     Format(dim, t, dir, sizeof(dir));
-    PetscCall(PetscSNPrintf(cause, sizeof(cause), "its Dirichlet conditions%s leave it free to move along %s", c && c->enabled && c->nob ? " and frictionless planes" : "", dir));
+    PetscCall(PetscSNPrintf(cause, sizeof(cause), "its supports (Dirichlet components%s) leave it free to move along %s", info->touched > 0 ? ", frictionless planes at its slave points" : "", dir));
   } else {
     char at[64], ax[64];
     Format(dim, point, at, sizeof(at));
     Format(dim, axis, ax, sizeof(ax));
-    if (dim == 2) PetscCall(PetscSNPrintf(cause, sizeof(cause), "its Dirichlet conditions%s leave it free to turn about the point %s", c && c->enabled && c->nob ? " and frictionless planes" : "", at));
-    else PetscCall(PetscSNPrintf(cause, sizeof(cause), "its Dirichlet conditions%s leave it free to turn about the axis %s through %s", c && c->enabled && c->nob ? " and frictionless planes" : "", ax, at));
+    if (dim == 2) PetscCall(PetscSNPrintf(cause, sizeof(cause), "its supports (Dirichlet components%s) leave it free to turn about the point %s", info->touched > 0 ? ", frictionless planes at its slave points" : "", at));
+    else PetscCall(PetscSNPrintf(cause, sizeof(cause), "its supports (Dirichlet components%s) leave it free to turn about the axis %s through %s", info->touched > 0 ? ", frictionless planes at its slave points" : "", ax, at));
   }
   SETERRQ(PetscObjectComm((PetscObject)dm), PETSC_ERR_USER_INPUT, "nothing holds %s%s: %s, and %s, so it can move rigidly and the solution is not unique. Give it a Dirichlet condition (-bc_<i>_values on its faces), or a contact pair with a body that is held (check that -contact_pair_<k>_slave_values and _master_values name the facets where the two bodies meet)", what, many, cause, info->bodies > 1 ? "no contact pair links them to a held body" : Pairs(c) ? "no contact pair names its facets" : "there are no contact pairs");
 }

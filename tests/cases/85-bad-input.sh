@@ -237,11 +237,17 @@ test_bad_input_free_body_ranks() {
   local rc=0 np
   for np in 1 2 3; do
     spc "$CASE_DIR/p$np.txt" $np -options_file input/patch_4_5.opts -contact_pair_0_slave_values 4 -contact_pair_0_master_values 3 -output_dir "$CASE_DIR" -output_name p$np
-    assert_eq "body held in x only refused on $np rank(s)" "$(grep -c "^spcontact: error: nothing holds the body in the box (0, 0.5)..(1, 1) (15 cells): its Dirichlet conditions leave it free to move along (0, 1), and no contact pair names its facets" "$CASE_DIR/p$np.txt")" 1 || rc=1
+    assert_eq "body held in x only refused on $np rank(s)" "$(grep -c "^spcontact: error: nothing holds the body in the box (0, 0.5)..(1, 1) (15 cells): its supports (Dirichlet components) leave it free to move along (0, 1), and no contact pair names its facets" "$CASE_DIR/p$np.txt")" 1 || rc=1
     spc "$CASE_DIR/d$np.txt" $np -options_file input/hertz2d_twobody.opts -bc_0_values 6 -contact_pair_0_slave_values 5 -output_dir "$CASE_DIR" -output_name d$np
     assert_eq "disc held by nothing refused on $np rank(s)" "$(grep -c "^spcontact: error: nothing holds the body in the box (0, 0)..(1, 1) (9580 cells): no Dirichlet condition acts on it and there is no obstacle, and no contact pair names its facets" "$CASE_DIR/d$np.txt")" 1 || rc=1
     spc "$CASE_DIR/n$np.txt" $np -mesh_file build/mesh/patch_4_5.msh -bc_0_type dirichlet -bc_0_values 1 -bc_0_components 0,1 -bc_1_type pressure -bc_1_values 4 -bc_1_value 0.01 -output_dir "$CASE_DIR" -output_name n$np
     assert_eq "free block without contact refused on $np rank(s)" "$(grep -c "^spcontact: error: nothing holds the body in the box (0, 0.5)..(1, 1) (15 cells): no Dirichlet condition acts on it and there is no obstacle, and there are no contact pairs" "$CASE_DIR/n$np.txt")" 1 || rc=1
+    # its rollers' components swapped (u_y on its left edge, u_x on its bottom): a rotation; and
+    # the lower block alone on a frictionless plane, the upper one held: free along x
+    spc "$CASE_DIR/r$np.txt" $np -mesh_file build/mesh/patch_4_5.msh -bc_0_type dirichlet -bc_0_values 1 -bc_0_components 0,1 -bc_1_type dirichlet -bc_1_values 5 -bc_1_components 1 -bc_2_type dirichlet -bc_2_values 3 -bc_2_components 0 -bc_3_type pressure -bc_3_values 4 -bc_3_value 0.01 -output_dir "$CASE_DIR" -output_name r$np
+    assert_eq "free rotation of one body refused on $np rank(s)" "$(grep -c "^spcontact: error: nothing holds the body in the box (0, 0.5)..(1, 1) (15 cells): its supports (Dirichlet components) leave it free to turn about the point (0, 0.5), and there are no contact pairs" "$CASE_DIR/r$np.txt")" 1 || rc=1
+    spc "$CASE_DIR/o$np.txt" $np -mesh_file build/mesh/patch_4_5.msh -bc_0_type dirichlet -bc_0_values 4 -bc_0_components 0,1 -bc_1_type pressure -bc_1_values 6 -bc_1_value 0.01 -contact_values 1 -contact_obstacle_0_type plane -contact_obstacle_0_point 0,0 -contact_obstacle_0_normal 0,1 -output_dir "$CASE_DIR" -output_name o$np
+    assert_eq "body on a frictionless plane free along x refused on $np rank(s)" "$(grep -c "^spcontact: error: nothing holds the body in the box (0, 0)..(1, 0.5) (8 cells): its supports (Dirichlet components, frictionless planes at its slave points) leave it free to move along (1, 0)" "$CASE_DIR/o$np.txt")" 1 || rc=1
   done
   spc "$CASE_DIR/ok.txt" 2 -mesh_file build/mesh/patch_4_5.msh -bc_0_type dirichlet -bc_0_values 1,4 -bc_0_components 0,1 -bc_1_type pressure -bc_1_values 6 -bc_1_value 0.01 -output_dir "$CASE_DIR" -output_name ok -output_fields false || rc=1
   assert_eq "both blocks held, no contact: runs" "$(sval "$CASE_DIR/ok.txt" converged)" yes || rc=1
