@@ -120,6 +120,10 @@ YAML options file including a missing file|input/hertz2d.opts|-options_file_yaml
 YAML options file including itself|input/hertz2d.opts|-options_file_yaml @DIR@/self.yaml
 YAML key given twice (not valid YAML; PETSc let the later override the first, exit 0)|input/hertz2d.opts|-options_file_yaml @DIR@/twice.yaml
 YAML key given twice in a nested mapping|input/hertz2d.opts|-options_file_yaml @DIR@/twice_nested.yaml
+options file that is a directory (was a PETSc error wall)|input/hertz2d.opts|-options_file @DIR@
+YAML file that is a directory (was: not valid YAML, input error)|input/hertz2d.opts|-options_file_yaml @DIR@
+mesh file that is a directory (was: no $MeshFormat header)|input/hertz2d.opts|-mesh_file @DIR@
+restart file that is a directory (was: not a readable HDF5 file)|input/hertz2d.opts|-restart @DIR@
 YAML key with the option's dash (PETSc read --contact_method: the other spelling ran, exit 0)|input/hertz2d.opts|-options_file_yaml @DIR@/dash.yaml
 YAML option in two cases (the later silently won, exit 0)|input/hertz2d.opts|-options_file_yaml @DIR@/case.yaml
 YAML option nested and joined (the later silently won, exit 0)|input/hertz2d.opts|-options_file_yaml @DIR@/joined.yaml
