@@ -68,6 +68,10 @@ static PetscErrorCode CheckMeshFile(MPI_Comm comm, const char file[], double ran
   PetscCallMPI(MPI_Bcast(range, 6, MPI_DOUBLE, 0, comm));
   PetscCheck(status != 1, comm, PETSC_ERR_USER_INPUT, "-mesh_file %s: cannot open the file (check the path; run `make meshes` to build input/*.geo into build/mesh/)", file);
   PetscCheck(status != 4, comm, PETSC_ERR_USER_INPUT, "-mesh_file %s: a directory, not a mesh file; give the .msh file's path", file);
+  { /* a geometry for the mesh, not the mesh (input/<case>.geo next to build/mesh/<case>.msh) */
+    size_t n = strlen(file);
+    PetscCheck(status != 2 || n < 4 || strcmp(file + n - 4, ".geo"), comm, PETSC_ERR_USER_INPUT, "-mesh_file %s: a gmsh geometry, not a mesh: mesh it first (gmsh -2 %s -format msh22 -o F.msh, or make meshes, which builds input/<case>.geo into build/mesh/<case>.msh)", file, file);
+  }
   PetscCheck(status != 2, comm, PETSC_ERR_USER_INPUT, "-mesh_file %s: not a gmsh mesh (no $MeshFormat header); give a .msh written by gmsh", file);
   PetscCheck(status != 3, comm, PETSC_ERR_USER_INPUT, "-mesh_file %s: gmsh format %s is not supported; write format 4.1 or 2.2 (gmsh -format msh41, or File > Export), or convert it with scripts/convert-mesh", file, version);
   PetscFunctionReturn(PETSC_SUCCESS);

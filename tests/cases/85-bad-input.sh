@@ -123,6 +123,10 @@ YAML key given twice in a nested mapping|input/hertz2d.opts|-options_file_yaml @
 options file that is a directory (was a PETSc error wall)|input/hertz2d.opts|-options_file @DIR@
 YAML file that is a directory (was: not valid YAML, input error)|input/hertz2d.opts|-options_file_yaml @DIR@
 mesh file that is a directory (was: no $MeshFormat header)|input/hertz2d.opts|-mesh_file @DIR@
+mesh file that is the .geo (was: no $MeshFormat header)|input/hertz2d.opts|-mesh_file input/hertz2d.geo
+mesh scale zero (was: flat cells)|input/hertz2d.opts|-dm_plex_scale 0
+mesh scale negative (3D: was inverted cells, reorder the vertices)|input/block3d.opts|-dm_plex_scale -1
+mesh scale not a number (was: flat cells)|input/elastic2d.opts|-dm_plex_scale nan
 restart file that is a directory (was: not a readable HDF5 file)|input/hertz2d.opts|-restart @DIR@
 YAML key with the option's dash (PETSc read --contact_method: the other spelling ran, exit 0)|input/hertz2d.opts|-options_file_yaml @DIR@/dash.yaml
 YAML option in two cases (the later silently won, exit 0)|input/hertz2d.opts|-options_file_yaml @DIR@/case.yaml
