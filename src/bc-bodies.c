@@ -236,10 +236,12 @@ static void Format(PetscInt dim, const PetscReal v[3], char s[], size_t len)
 /* The one line for free group info (G: its rows; nfree: groups found free) */
 static PetscErrorCode Refuse(DM dm, SPContact c, PetscInt dim, const SPGroupInfo *info, PetscReal G[][SP_RIGID_MAX], PetscInt nfree)
 {
-  PetscReal centre[3] = {0, 0, 0}, size = 0.0, t[3], axis[3], point[3], rows = 0.0;
-  PetscInt  nrot;
-  PetscBool trans;
-  char      lo[64], hi[64], what[160], cause[320], many[64] = "";
+  const PetscBool group = info->bodies > 1 ? PETSC_TRUE : PETSC_FALSE;
+  const char     *its = group ? "their" : "its", *it = group ? "them" : "it", *they = group ? "they" : "it";
+  PetscReal       centre[3] = {0, 0, 0}, size = 0.0, t[3], axis[3], point[3], rows = 0.0;
+  PetscInt        nrot;
+  PetscBool       trans;
+  char            lo[64], hi[64], what[160], cause[320], many[64] = "", sup[96], motion[160];
 
   PetscFunctionBeginUser;
   for (PetscInt d = 0; d < dim; ++d) centre[d] = 0.5 * (info->lo[d] + info->hi[d]), size = PetscMax(size, info->hi[d] - info->lo[d]);
@@ -247,22 +249,25 @@ static PetscErrorCode Refuse(DM dm, SPContact c, PetscInt dim, const SPGroupInfo
   PetscCall(SPBCRigidKernel(dim, G, centre, size, &trans, t, &nrot, axis, point));
   Format(dim, info->lo, lo, sizeof(lo));
   Format(dim, info->hi, hi, sizeof(hi));
-  if (info->bodies > 1) PetscCall(PetscSNPrintf(what, sizeof(what), "the %d bodies that contact pairs link in the box %s..%s (%.0f cells)", (int)info->bodies, lo, hi, (double)info->cells));
+  if (group) PetscCall(PetscSNPrintf(what, sizeof(what), "the %d bodies that contact pairs link in the box %s..%s (%.0f cells)", (int)info->bodies, lo, hi, (double)info->cells));
   else PetscCall(PetscSNPrintf(what, sizeof(what), "the body in the box %s..%s (%.0f cells)", lo, hi, (double)info->cells));
   if (nfree > 1) PetscCall(PetscSNPrintf(many, sizeof(many), " (one of %" PetscInt_FMT " bodies or groups held by nothing)", nfree));
-  if (rows == 0.0) PetscCall(PetscSNPrintf(cause, sizeof(cause), "no Dirichlet condition acts on it%s", c && c->enabled && c->nob ? " and no obstacle can touch it (none of its facets is in -contact_values)" : " and there is no obstacle"));
-  else if (trans) {
+  PetscCall(PetscSNPrintf(sup, sizeof(sup), "%s supports (Dirichlet components%s%s%s)", its, info->touched > 0 ? ", frictionless planes at " : "", info->touched > 0 ? its : "", info->touched > 0 ? " slave points" : ""));
+  if (trans) {
     char dir[64];
     Format(dim, t, dir, sizeof(dir));
-    PetscCall(PetscSNPrintf(cause, sizeof(cause), "its supports (Dirichlet components%s) leave it free to move along %s", info->touched > 0 ? ", frictionless planes at its slave points" : "", dir));
+    PetscCall(PetscSNPrintf(motion, sizeof(motion), "move along %s", dir));
   } else {
     char at[64], ax[64];
     Format(dim, point, at, sizeof(at));
     Format(dim, axis, ax, sizeof(ax));
-    if (dim == 2) PetscCall(PetscSNPrintf(cause, sizeof(cause), "its supports (Dirichlet components%s) leave it free to turn about the point %s", info->touched > 0 ? ", frictionless planes at its slave points" : "", at));
-    else PetscCall(PetscSNPrintf(cause, sizeof(cause), "its supports (Dirichlet components%s) leave it free to turn about the axis %s through %s", info->touched > 0 ? ", frictionless planes at its slave points" : "", ax, at));
+    if (dim == 2) PetscCall(PetscSNPrintf(motion, sizeof(motion), "turn about the point %s", at));
+    else PetscCall(PetscSNPrintf(motion, sizeof(motion), "turn about the axis %s through %s", ax, at));
   }
-  SETERRQ(PetscObjectComm((PetscObject)dm), PETSC_ERR_USER_INPUT, "nothing holds %s%s: %s, and %s, so it can move rigidly and the solution is not unique. Give it a Dirichlet condition (-bc_<i>_values on its faces), or a contact pair with a body that is held (check that -contact_pair_<k>_slave_values and _master_values name the facets where the two bodies meet)", what, many, cause, info->bodies > 1 ? "no contact pair links them to a held body" : Pairs(c) ? "no contact pair names its facets" : "there are no contact pairs");
+  if (rows == 0.0 && c && c->enabled && c->nob) PetscCall(PetscSNPrintf(cause, sizeof(cause), "no Dirichlet condition acts on %s and no obstacle can touch %s (none of %s facets is in -contact_values)", it, it, its));
+  else if (rows == 0.0) PetscCall(PetscSNPrintf(cause, sizeof(cause), "no Dirichlet condition acts on %s and there is no obstacle", it));
+  else PetscCall(PetscSNPrintf(cause, sizeof(cause), "%s leave %s free to %s", sup, it, motion));
+  SETERRQ(PetscObjectComm((PetscObject)dm), PETSC_ERR_USER_INPUT, "nothing holds %s%s: %s, and %s, so %s can move rigidly and the solution is not unique. Give %s a Dirichlet condition (-bc_<i>_values on %s faces), or a contact pair with a body that is held (check that -contact_pair_<k>_slave_values and _master_values name the facets where the two bodies meet)", what, many, cause, group ? "no contact pair links them to a held body" : Pairs(c) ? "no contact pair names its facets" : "there are no contact pairs", they, it, its);
 }
 
 /* Collective, after the contact set-up: one line if a body, or a group of bodies that contact pairs

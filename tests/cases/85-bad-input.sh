@@ -240,7 +240,8 @@ CASES
 # (13 cut-backs, exit 2, in each case below). The bodies are the connected cells; the line is the
 # same on 1, 2 and 3 ranks. The patch test's upper block with the pair on its own facets (held in x
 # only); B6's disc with no condition and in no pair; the patch mesh without contact, its upper block
-# free under a pressure; both blocks held run (the shipped pair cases: tests pairs, patch)
+# free under a pressure; two of three blocks that a pair links, held by nothing; both blocks held
+# run, and the three blocks linked by two pairs (the shipped pair cases: tests pairs, patch)
 test_bad_input_free_body_ranks() {
   local rc=0 np
   for np in 1 2 3; do
@@ -257,6 +258,28 @@ test_bad_input_free_body_ranks() {
     spc "$CASE_DIR/o$np.txt" $np -mesh_file build/mesh/patch_4_5.msh -bc_0_type dirichlet -bc_0_values 4 -bc_0_components 0,1 -bc_1_type pressure -bc_1_values 6 -bc_1_value 0.01 -contact_values 1 -contact_obstacle_0_type plane -contact_obstacle_0_point 0,0 -contact_obstacle_0_normal 0,1 -output_dir "$CASE_DIR" -output_name o$np
     assert_eq "body on a frictionless plane free along x refused on $np rank(s)" "$(grep -c "^spcontact: error: nothing holds the body in the box (0, 0)..(1, 0.5) (8 cells): its supports (Dirichlet components, frictionless planes at its slave points) leave it free to move along (1, 0)" "$CASE_DIR/o$np.txt")" 1 || rc=1
   done
+  # three stacked unit blocks (gmsh; curves 10k+1 bottom, 10k+3 top, 10k+4 left of block k): the
+  # lowest fixed, every left edge held in x, a pair between the upper two only: those two together
+  # are free along y; with a second pair down to the lowest block the run converges
+  {
+    echo "Geometry.AutoCoherence = 0;"
+    echo "For k In {0:2}"
+    echo "  p = newp; Point(p) = {0, k, 0, 0.25}; Point(p+1) = {1, k, 0, 0.25}; Point(p+2) = {1, k+1, 0, 0.25}; Point(p+3) = {0, k+1, 0, 0.25};"
+    echo "  l = newl; Line(l) = {p, p+1}; Line(l+1) = {p+1, p+2}; Line(l+2) = {p+2, p+3}; Line(l+3) = {p+3, p};"
+    echo "  cl = newll; Curve Loop(cl) = {l, l+1, l+2, l+3}; s = news; Plane Surface(s) = {cl}; Transfinite Surface{s}; Recombine Surface{s};"
+    echo "  Physical Curve(10*k+1) = {l}; Physical Curve(10*k+3) = {l+2}; Physical Curve(10*k+4) = {l+3}; Physical Surface(100+k) = {s};"
+    echo "EndFor"
+  } > "$CASE_DIR/three.geo"
+  gmsh -v 2 -2 -format msh22 -o "$CASE_DIR/three.msh" "$CASE_DIR/three.geo" >/dev/null || { echo "gmsh failed on three.geo"; return 1; }
+  local three="-mesh_file $CASE_DIR/three.msh -bc_0_type dirichlet -bc_0_values 1 -bc_0_components 0,1 -bc_1_type dirichlet -bc_1_values 4,14,24 -bc_1_components 0 -bc_2_type pressure -bc_2_values 23 -bc_2_value 0.01 -contact_pair_0_slave_values 21 -contact_pair_0_master_values 13"
+  for np in 1 2 3; do
+    # shellcheck disable=SC2086
+    spc "$CASE_DIR/g$np.txt" $np $three -output_dir "$CASE_DIR" -output_name g$np
+    assert_eq "two linked bodies held by nothing refused on $np rank(s)" "$(grep -c "^spcontact: error: nothing holds the 2 bodies that contact pairs link in the box (0, 1)..(1, 3) (32 cells): their supports (Dirichlet components) leave them free to move along (0, 1), and no contact pair links them to a held body" "$CASE_DIR/g$np.txt")" 1 || rc=1
+  done
+  # shellcheck disable=SC2086
+  spc "$CASE_DIR/g.txt" 2 $three -contact_pair_1_slave_values 11 -contact_pair_1_master_values 3 -output_dir "$CASE_DIR" -output_name g -output_fields false || rc=1
+  assert_eq "three blocks linked by two pairs: runs" "$(sval "$CASE_DIR/g.txt" converged)" yes || rc=1
   spc "$CASE_DIR/ok.txt" 2 -mesh_file build/mesh/patch_4_5.msh -bc_0_type dirichlet -bc_0_values 1,4 -bc_0_components 0,1 -bc_1_type pressure -bc_1_values 6 -bc_1_value 0.01 -output_dir "$CASE_DIR" -output_name ok -output_fields false || rc=1
   assert_eq "both blocks held, no contact: runs" "$(sval "$CASE_DIR/ok.txt" converged)" yes || rc=1
   return $rc
