@@ -10,7 +10,9 @@
    joined one (`contact: {method: alm}` and `contact_method: penalty`); a key taken from a "<<"
    merge may be overridden, as YAML means it to be. A key with a leading dash (`-contact_method`)
    is refused too: PETSc reads it as `--contact_method`, an option nothing reads, and the run took
-   the default without a word until the unused-option report at its end (QA helper 30). */
+   the default without a word until the unused-option report at its end (QA helper 30), and so is
+   an empty key or one with a space (`contact method: alm`), which PETSc set as options nothing
+   reads. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -152,6 +154,11 @@ static int Value(Ctx *c, yaml_node_t *k, yaml_node_t *v)
 
   if (!strcmp(Str(k), "<<")) return Merge(c, v);
   if (!strncmp(Str(k), "$$", 2)) return Include(c, v);
+  if (!Str(k)[0] || strpbrk(Str(k), " \t")) { /* PETSc sets "-" or "-contact method", which nothing reads */
+    char what[256];
+    snprintf(what, sizeof(what), "key '%.100s': %s (PETSc would set an option nothing reads, and the run would go on without it)", Str(k), Str(k)[0] ? "an option name has no spaces: join its words with '_'" : "an empty key is not an option name");
+    return Bad(c, k, what);
+  }
   if (!strcmp(Str(k), "options_file") || !strcmp(Str(k), "options_file_yaml"))
     return Bad(c, k, "PETSc does not read an options file named inside a YAML file; give it on the command line, or include a YAML file with '$$name: !include file.yaml'");
   if (Str(k)[0] == '-' || v->type != YAML_MAPPING_NODE) bad = Record(c, k); /* a mapping sets no option of its own */

@@ -29,6 +29,8 @@ test_bad_input_catalogue() {
   printf 'contact_method: alm\n-contact_method: penalty\n' > "$CASE_DIR/dash.yaml"
   printf 'contact_method: alm\nContact_Method: penalty\n' > "$CASE_DIR/case.yaml"
   printf 'contact:\n  method: alm\n  alpha: 100\ncontact_method: penalty\n' > "$CASE_DIR/joined.yaml"
+  printf 'contact method: alm\n' > "$CASE_DIR/space.yaml"
+  printf '"": 3\n' > "$CASE_DIR/empty.yaml"
   sed -e "s|@DIR@|$CASE_DIR|g" -e "s|@LONG@|$(printf 'x%.0s' {1..300})|" <<'CASES' | bad_input_cases
 contact label on cells|input/hertz2d.opts|-contact_label "Cell Sets" -contact_values 1
 contact value without points|input/hertz2d.opts|-contact_values 99
@@ -131,6 +133,8 @@ restart file that is a directory (was: not a readable HDF5 file)|input/hertz2d.o
 YAML key with the option's dash (PETSc read --contact_method: the other spelling ran, exit 0)|input/hertz2d.opts|-options_file_yaml @DIR@/dash.yaml
 YAML option in two cases (the later silently won, exit 0)|input/hertz2d.opts|-options_file_yaml @DIR@/case.yaml
 YAML option nested and joined (the later silently won, exit 0)|input/hertz2d.opts|-options_file_yaml @DIR@/joined.yaml
+YAML key with a space (ran without it, one warning at the end, exit 0)|input/hertz2d.opts|-options_file_yaml @DIR@/space.yaml
+YAML key empty (set the option -, one warning at the end, exit 0)|input/hertz2d.opts|-options_file_yaml @DIR@/empty.yaml
 bc type unknown|input/hertz2d.opts|-bc_1_type force_field
 bc component out of range (2D)|input/hertz2d.opts|-bc_0_components 2
 bc component out of range (3D)|input/hertz3d.opts|-bc_0_components 3
