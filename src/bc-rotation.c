@@ -16,8 +16,6 @@
    the translations are held. */
 #include <spcontact-impl.h>
 
-#define SP_RIGID_MAX 6 /* rigid modes in 3D: 3 translations, 3 rotations */
-
 /* G += phi phi^T for the support of direction r (unit) at the scaled position y */
 static void AddRow(PetscInt dim, const PetscReal y[3], const PetscReal r[3], PetscReal G[][SP_RIGID_MAX])
 {
@@ -31,9 +29,10 @@ static void AddRow(PetscInt dim, const PetscReal y[3], const PetscReal r[3], Pet
     for (PetscInt j = 0; j < m; ++j) G[i][j] += phi[i] * phi[j];
 }
 
-/* This rank's rows: its owned vertices' constrained components and its contact points against
-   every plane */
-static PetscErrorCode AddSupports(DM dm, SPContact c, PetscInt dim, const PetscReal centre[3], PetscReal size, PetscReal G[][SP_RIGID_MAX])
+/* This rank's rows: its owned vertices' constrained components and, with planes, its contact points
+   against every plane; each into G[g] of its vertex's group g = vgroup[v - vStart] (NULL: all in
+   group 0; < 0: none), at its position scaled by the group's centre and size */
+static PetscErrorCode AddSupports(DM dm, SPContact c, PetscBool planes, PetscInt dim, const PetscInt vgroup[], const PetscReal centre[][3], const PetscReal size[], PetscReal G[][SP_RIGID_MAX][SP_RIGID_MAX])
 {
   PetscSection       ls, cs;
   PetscSF            sf;
@@ -57,31 +56,48 @@ static PetscErrorCode AddSupports(DM dm, SPContact c, PetscInt dim, const PetscR
   }
   PetscCall(VecGetArrayRead(coords, &x));
   for (PetscInt v = vStart; v < vEnd; ++v) {
-    PetscInt        ncon = 0, off;
+    PetscInt        ncon = 0, off, g = vgroup ? vgroup[v - vStart] : 0;
     const PetscInt *cind = NULL;
     PetscReal       y[3] = {0, 0, 0};
-    if (ghost[v - vStart]) continue;
+    if (ghost[v - vStart] || g < 0) continue;
     PetscCall(PetscSectionGetConstraintDof(ls, v, &ncon));
     if (!ncon) continue;
     PetscCall(PetscSectionGetConstraintIndices(ls, v, &cind));
     PetscCall(PetscSectionGetOffset(cs, v, &off));
-    for (PetscInt d = 0; d < dim; ++d) y[d] = (PetscRealPart(x[off + d]) - centre[d]) / size;
+    for (PetscInt d = 0; d < dim; ++d) y[d] = (PetscRealPart(x[off + d]) - centre[g][d]) / size[g];
     for (PetscInt k = 0; k < ncon; ++k) {
       PetscReal e[3] = {0, 0, 0};
       if (cind[k] >= dim) continue;
       e[cind[k]] = 1.0;
-      AddRow(dim, y, e, G);
+      AddRow(dim, y, e, G[g]);
     }
   }
   PetscCall(VecRestoreArrayRead(coords, &x));
   PetscCall(PetscFree(ghost));
-  for (PetscInt i = 0; c && c->enabled && i < c->n; ++i)
-    for (PetscInt k = 0; c->pt[i].onObstacle && k < c->nob; ++k) { /* a pair's slave points hold nothing: their forces are internal */
+  for (PetscInt i = 0; planes && c && c->enabled && i < c->n; ++i) {
+    const PetscInt g = vgroup ? vgroup[c->pt[i].vertex - vStart] : 0;
+    for (PetscInt k = 0; c->pt[i].onObstacle && g >= 0 && k < c->nob; ++k) { /* a pair's slave points hold nothing: their forces are internal */
       PetscReal y[3] = {0, 0, 0}, n[3] = {0, 0, 0}, len = 0.0;
-      for (PetscInt d = 0; d < dim; ++d) y[d] = (c->pt[i].X[d] - centre[d]) / size, len += c->ob[k].normal[d] * c->ob[k].normal[d];
+      for (PetscInt d = 0; d < dim; ++d) y[d] = (c->pt[i].X[d] - centre[g][d]) / size[g], len += c->ob[k].normal[d] * c->ob[k].normal[d];
       for (PetscInt d = 0; d < dim; ++d) n[d] = c->ob[k].normal[d] / PetscSqrtReal(len);
-      AddRow(dim, y, n, G);
+      AddRow(dim, y, n, G[g]);
     }
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Collective: G[g] = the sum over every rank's rows of group g (ngroup groups; see AddSupports) */
+PetscErrorCode SPBCRigidSupports(DM dm, SPContact c, PetscBool planes, const PetscInt vgroup[], PetscInt ngroup, const PetscReal centre[][3], const PetscReal size[], PetscReal G[][SP_RIGID_MAX][SP_RIGID_MAX])
+{
+  PetscReal(*loc)[SP_RIGID_MAX][SP_RIGID_MAX];
+  PetscInt dim;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMGetCoordinateDim(dm, &dim));
+  PetscCall(PetscCalloc1(ngroup, &loc));
+  PetscCall(AddSupports(dm, c, planes, dim, vgroup, centre, size, loc));
+  PetscCallMPI(MPI_Allreduce(&loc[0][0][0], &G[0][0][0], (PetscMPIInt)(ngroup * SP_RIGID_MAX * SP_RIGID_MAX), MPIU_REAL, MPI_SUM, PetscObjectComm((PetscObject)dm)));
+  PetscCall(PetscFree(loc));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -141,47 +157,77 @@ static void ShownMode(PetscInt dim, PetscReal v[][SP_RIGID_MAX], const PetscInt 
   }
 }
 
-/* Collective: whether the supports leave a rigid rotation free (*nfree: how many independent
-   ones), and one of them: its axis (3D; (0, 0, 1) in 2D) through point (in the mesh's units) */
-PetscErrorCode SPBCFreeRotation(DM dm, SPContact c, PetscInt *nfree, PetscReal axis[3], PetscReal point[3])
+/* A free rigid translation of G (rows of any group): *free, and its unit direction t (the
+   translations' block G_tt is singular exactly when every row is normal to some t) */
+static void FreeTranslation(PetscInt dim, PetscReal G[][SP_RIGID_MAX], PetscBool *free, PetscReal t[3])
 {
-  PetscInt       m, kern[SP_RIGID_MAX], nk = 0, cdim;
-  PetscReal      lo[3], hi[3], centre[3] = {0, 0, 0}, size = 0.0, loc[SP_RIGID_MAX][SP_RIGID_MAX], G[SP_RIGID_MAX][SP_RIGID_MAX], w[SP_RIGID_MAX], v[SP_RIGID_MAX][SP_RIGID_MAX], mode[SP_RIGID_MAX], wl = 0.0, wmax = 0.0;
+  PetscReal a[SP_RIGID_MAX][SP_RIGID_MAX], w[SP_RIGID_MAX], v[SP_RIGID_MAX][SP_RIGID_MAX], wmax = 0.0;
+  PetscInt  lo = 0;
+
+  for (PetscInt i = 0; i < dim; ++i)
+    for (PetscInt j = 0; j < dim; ++j) a[i][j] = G[i][j];
+  Eigen(dim, a, w, v);
+  for (PetscInt i = 0; i < dim; ++i) {
+    wmax = PetscMax(wmax, w[i]);
+    if (w[i] < w[lo]) lo = i;
+  }
+  *free = w[lo] <= 1e-10 * wmax ? PETSC_TRUE : PETSC_FALSE;
+  for (PetscInt d = 0; d < 3; ++d) t[d] = d < dim && PetscAbsReal(v[d][lo]) > 1e-10 ? v[d][lo] : 0.0;
+}
+
+/* The rigid modes G (a group's rows, positions scaled by centre and size) leaves free: *ntrans > 0
+   with a free translation (its direction t), else *nfree the free rotations and one of them: its
+   axis (3D; (0, 0, 1) in 2D) through point (in the mesh's units) */
+PetscErrorCode SPBCRigidKernel(PetscInt cdim, PetscReal G[][SP_RIGID_MAX], const PetscReal centre[3], PetscReal size, PetscBool *trans, PetscReal t[3], PetscInt *nfree, PetscReal axis[3], PetscReal point[3])
+{
+  const PetscInt m = cdim * (cdim + 1) / 2;
+  PetscInt       kern[SP_RIGID_MAX], nk = 0;
+  PetscReal      w[SP_RIGID_MAX], v[SP_RIGID_MAX][SP_RIGID_MAX], mode[SP_RIGID_MAX], wl = 0.0, wmax = 0.0;
 
   PetscFunctionBeginUser;
-  PetscCall(DMGetCoordinateDim(dm, &cdim));
-  m = cdim * (cdim + 1) / 2;
-  PetscCall(DMGetBoundingBox(dm, lo, hi));
-  for (PetscInt d = 0; d < cdim; ++d) centre[d] = 0.5 * (lo[d] + hi[d]), size = PetscMax(size, hi[d] - lo[d]);
-  PetscCall(PetscArrayzero(&loc[0][0], SP_RIGID_MAX * SP_RIGID_MAX));
-  PetscCall(AddSupports(dm, c, cdim, centre, size, loc));
-  PetscCallMPI(MPI_Allreduce(&loc[0][0], &G[0][0], SP_RIGID_MAX * SP_RIGID_MAX, MPIU_REAL, MPI_SUM, PetscObjectComm((PetscObject)dm)));
+  *nfree = 0;
+  FreeTranslation(cdim, G, trans, t);
+  if (*trans) PetscFunctionReturn(PETSC_SUCCESS);
   Eigen(m, G, w, v);
   for (PetscInt i = 0; i < m; ++i) wmax = PetscMax(wmax, w[i]);
   for (PetscInt i = 0; i < m; ++i)
     if (w[i] <= 1e-10 * wmax) kern[nk++] = i;
-  *nfree = nk;
   if (!nk) PetscFunctionReturn(PETSC_SUCCESS);
   ShownMode(cdim, v, kern, nk, mode);
   axis[0] = axis[1] = 0.0, axis[2] = 1.0;
   for (PetscInt j = 0; cdim == 3 && j < 3; ++j) axis[j] = mode[3 + j];
   for (PetscInt j = 0; j < 3; ++j) wl += axis[j] * axis[j];
   wl = cdim == 2 ? mode[2] : PetscSqrtReal(wl);
-  if (wl < 1e-8) { /* a free translation, which bc-balance.c reports before (not reached) */
-    *nfree = 0;
-    PetscFunctionReturn(PETSC_SUCCESS);
-  }
+  if (wl < 1e-8) PetscFunctionReturn(PETSC_SUCCESS); /* a free translation, found above (not reached) */
+  *nfree = nk;
   for (PetscInt j = 0; cdim == 3 && j < 3; ++j) axis[j] /= wl;
   { /* the axis point nearest the centre: y = w x t / |w|^2 (2D: (-t_y, t_x) / w) */
-    const PetscReal *t = mode, wz = cdim == 2 ? mode[2] : 0.0;
+    const PetscReal *tr = mode, wz = cdim == 2 ? mode[2] : 0.0;
     PetscReal        y[3] = {0, 0, 0};
-    if (cdim == 2) y[0] = -t[1] / wz, y[1] = t[0] / wz;
-    else y[0] = (axis[1] * t[2] - axis[2] * t[1]) / wl, y[1] = (axis[2] * t[0] - axis[0] * t[2]) / wl, y[2] = (axis[0] * t[1] - axis[1] * t[0]) / wl;
+    if (cdim == 2) y[0] = -tr[1] / wz, y[1] = tr[0] / wz;
+    else y[0] = (axis[1] * tr[2] - axis[2] * tr[1]) / wl, y[1] = (axis[2] * tr[0] - axis[0] * tr[2]) / wl, y[2] = (axis[0] * tr[1] - axis[1] * tr[0]) / wl;
     for (PetscInt d = 0; d < 3; ++d) {
       point[d] = d < cdim ? centre[d] + size * y[d] : 0.0;
       if (PetscAbsReal(point[d]) < 1e-10 * size) point[d] = 0.0;
       if (PetscAbsReal(axis[d]) < 1e-10) axis[d] = 0.0;
     }
   }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Collective: whether the supports of the whole mesh leave a rigid rotation free (*nfree: how
+   many independent ones), and one of them (SPBCRigidKernel); translations are checked before */
+PetscErrorCode SPBCFreeRotation(DM dm, SPContact c, PetscInt *nfree, PetscReal axis[3], PetscReal point[3])
+{
+  PetscInt  cdim;
+  PetscReal lo[3], hi[3], centre[1][3] = {{0, 0, 0}}, size[1] = {0.0}, G[1][SP_RIGID_MAX][SP_RIGID_MAX], t[3];
+  PetscBool trans;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMGetCoordinateDim(dm, &cdim));
+  PetscCall(DMGetBoundingBox(dm, lo, hi));
+  for (PetscInt d = 0; d < cdim; ++d) centre[0][d] = 0.5 * (lo[d] + hi[d]), size[0] = PetscMax(size[0], hi[d] - lo[d]);
+  PetscCall(SPBCRigidSupports(dm, c, PETSC_TRUE, NULL, 1, centre, size, G));
+  PetscCall(SPBCRigidKernel(cdim, G[0], centre[0], size[0], &trans, t, nfree, axis, point));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

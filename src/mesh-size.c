@@ -3,7 +3,9 @@
    a zero or negative face count deep in the cell geometry; one face count in 2D silently gave a
    4 x 2 box) and the uniform refinements (-dm_refine 20 on an 8 x 8 box asked for 7e13 cells and
    ran until the memory was gone: PETSc refines the serial mesh on rank 0 before it is
-   distributed). */
+   distributed). The scale -dm_plex_scale too: a unit change is a factor > 0 (0 or nan were
+   refused as flat cells, -1 as inverted cells in 3D, which named the vertex order or the box
+   extents, not the option; in 2D -1 turned the mesh half a turn). */
 #include <spcontact-impl.h>
 #include <unistd.h>
 
@@ -78,6 +80,20 @@ static PetscErrorCode CheckRefinement(MPI_Comm comm, PetscInt dim, PetscBool sim
 }
 
 /* Before DMSetFromOptions, after the dimension's check: dm is the mesh read from a file, or NULL for PETSc's box */
+/* -dm_plex_scale L: PETSc multiplies the coordinates by L (README: a change of units) */
+static PetscErrorCode CheckScale(MPI_Comm comm)
+{
+  PetscReal L = 1.0;
+  PetscBool set;
+  char      given[64] = "";
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsGetString(NULL, NULL, "-dm_plex_scale", given, sizeof(given), NULL)); /* as given, for the line */
+  PetscCall(PetscOptionsGetReal(NULL, NULL, "-dm_plex_scale", &L, &set));
+  PetscCheck(!set || (L > 0.0 && !PetscIsInfOrNanReal(L)), comm, PETSC_ERR_USER_INPUT, "-dm_plex_scale %s: must be a finite factor > 0 (it multiplies the mesh coordinates, a change of units: scale E, the loads and the Dirichlet values with it)", given);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode SPMeshCheckSize(MPI_Comm comm, DM dm)
 {
   PetscInt  dim = 2, cStart = 0, cEnd = 0;
@@ -85,6 +101,7 @@ PetscErrorCode SPMeshCheckSize(MPI_Comm comm, DM dm)
   PetscReal cells;
 
   PetscFunctionBeginUser;
+  PetscCall(CheckScale(comm));
   if (dm) {
     PetscCall(DMGetDimension(dm, &dim));
     PetscCall(DMPlexIsSimplex(dm, &simplex));

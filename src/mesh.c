@@ -2,6 +2,7 @@
 #include <ctype.h>
 #include <spcontact-impl.h>
 #include <kernels/tensor.h>
+#include <sys/stat.h>
 
 /* The range of the node coordinates of an ASCII gmsh file at its $Nodes section (r: min x, y, z,
    then max x, y, z); false if the section cannot be read (binary files: not looked at). PETSc's
@@ -42,16 +43,18 @@ static PetscBool NodeRange(FILE *fp, int major, double r[6])
 static PetscErrorCode CheckMeshFile(MPI_Comm comm, const char file[], double range[6])
 {
   PetscMPIInt rank;
-  int         status = 0, type = 1; /* 0 ok, 1 missing, 2 not gmsh, 3 unsupported version; type 0: ASCII */
+  int         status = 0, type = 1; /* 0 ok, 1 missing, 2 not gmsh, 3 unsupported version, 4 a directory; type 0: ASCII */
   char        version[32] = "";
 
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   for (int d = 0; d < 3; ++d) range[d] = 1.0, range[3 + d] = 0.0;
   if (rank == 0) {
-    FILE *fp = fopen(file, "r");
-    char  line[64] = "";
+    FILE       *fp = fopen(file, "r");
+    char        line[64] = "";
+    struct stat st;
     if (!fp) status = 1;
+    else if (!stat(file, &st) && S_ISDIR(st.st_mode)) status = 4, fclose(fp); /* fopen opens a directory */
     else {
       if (!fgets(line, sizeof(line), fp) || strncmp(line, "$MeshFormat", 11)) status = 2;
       else if (!fgets(line, sizeof(line), fp) || sscanf(line, "%31s %d", version, &type) < 1) status = 2;
@@ -65,6 +68,11 @@ static PetscErrorCode CheckMeshFile(MPI_Comm comm, const char file[], double ran
   PetscCallMPI(MPI_Bcast(version, sizeof(version), MPI_CHAR, 0, comm));
   PetscCallMPI(MPI_Bcast(range, 6, MPI_DOUBLE, 0, comm));
   PetscCheck(status != 1, comm, PETSC_ERR_USER_INPUT, "-mesh_file %s: cannot open the file (check the path; run `make meshes` to build input/*.geo into build/mesh/)", file);
+  PetscCheck(status != 4, comm, PETSC_ERR_USER_INPUT, "-mesh_file %s: a directory, not a mesh file; give the .msh file's path", file);
+  { /* a geometry for the mesh, not the mesh (input/<case>.geo next to build/mesh/<case>.msh) */
+    size_t n = strlen(file);
+    PetscCheck(status != 2 || n < 4 || strcmp(file + n - 4, ".geo"), comm, PETSC_ERR_USER_INPUT, "-mesh_file %s: a gmsh geometry, not a mesh: mesh it first (gmsh -2 %s -format msh22 -o F.msh, or make meshes, which builds input/<case>.geo into build/mesh/<case>.msh)", file, file);
+  }
   PetscCheck(status != 2, comm, PETSC_ERR_USER_INPUT, "-mesh_file %s: not a gmsh mesh (no $MeshFormat header); give a .msh written by gmsh", file);
   PetscCheck(status != 3, comm, PETSC_ERR_USER_INPUT, "-mesh_file %s: gmsh format %s is not supported; write format 4.1 or 2.2 (gmsh -format msh41, or File > Export), or convert it with scripts/convert-mesh", file, version);
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -11,6 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
+#include <sys/stat.h>
 #include <spcontact.h>
 
 #define MAX_DEPTH 16 /* options files inside options files */
@@ -138,6 +139,14 @@ static int CheckContents(FILE *fp, const Where *w)
   return pending ? 1 : 0;
 }
 
+/* Whether path names a directory (fopen opens one for reading, and its reads fail) */
+static int IsDirectory(const char *path)
+{
+  struct stat st;
+
+  return !stat(path, &st) && S_ISDIR(st.st_mode);
+}
+
 static int CheckFile(const char *opt, const char *file, const Where *w)
 {
   Where inner = *w;
@@ -145,6 +154,7 @@ static int CheckFile(const char *opt, const char *file, const Where *w)
   int   bad;
 
   if (w->depth >= MAX_DEPTH) return Fail(w, opt, file, "options files nested more than 16 deep (does a file name itself?)");
+  if (IsDirectory(file)) return Fail(w, opt, file, "a directory, not a file; give the options file's path");
   errno = 0;
   fp    = fopen(file, "r");
   if (!fp) {

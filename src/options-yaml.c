@@ -4,18 +4,38 @@
    to scalars, sequences (of scalars or one-pair mappings) or mappings (prefixes); "<<" merges a
    mapping or a sequence of mappings; a key "$$..." is skipped, but with the tag !include its
    value names a YAML file read in place (checked the same way). A key given twice in one mapping
-   (not valid YAML; libyaml keeps both and PETSc took the last without a word) is refused. */
+   (not valid YAML; libyaml keeps both and PETSc took the last without a word) is refused, and so
+   is one option set twice in one file under two spellings, which PETSc also let the later
+   override: keys that differ in case (PETSc's option names ignore it), or a nested key and the
+   joined one (`contact: {method: alm}` and `contact_method: penalty`); a key taken from a "<<"
+   merge may be overridden, as YAML means it to be. A key with a leading dash (`-contact_method`)
+   is refused too: PETSc reads it as `--contact_method`, an option nothing reads, and the run took
+   the default without a word until the unused-option report at its end (QA helper 30), and so is
+   an empty key or one with a space (`contact method: alm`), which PETSc set as options nothing
+   reads. */
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 #include <yaml.h>
 
 #define MAX_DEPTH 16 /* !include inside included files */
+#define MAX_NAME  256
+
+typedef struct {
+  char          name[MAX_NAME]; /* the option as PETSc forms it, without the dash */
+  unsigned long line;
+} Seen;
 
 typedef struct {
   yaml_document_t *doc;
   char            *why; /* the reason of a failure */
   size_t           len;
-  int              depth; /* of !include */
+  int              depth;  /* of !include */
+  char             prefix[MAX_NAME]; /* the nested keys joined with '_', as PETSc pushes them */
+  int              merging; /* inside a "<<" merge: its keys may be overridden */
+  Seen            *seen;    /* the options this file set, in order */
+  size_t           nseen, maxseen;
 } Ctx;
 
 static int Layer(Ctx *c, yaml_node_t *node);
@@ -32,8 +52,47 @@ static int Bad(Ctx *c, yaml_node_t *n, const char *what)
   return 1;
 }
 
+/* The option that key k sets (the prefix and k, as PETSc joins them), once per file: a second
+   spelling of one already set is refused (PETSc's option names ignore case) */
+static int Record(Ctx *c, yaml_node_t *k)
+{
+  char name[MAX_NAME], what[1024];
+
+  if (Str(k)[0] == '-') {
+    snprintf(what, sizeof(what), "key '%.100s': YAML keys are option names without the dash (PETSc would read it as -%.100s%.100s, an option nothing reads): write '%.100s'", Str(k), c->prefix, Str(k), Str(k) + 1);
+    return Bad(c, k, what);
+  }
+  if (c->merging) return 0; /* a merged key: the mapping's own keys may override it */
+  snprintf(name, sizeof(name), "%s%s", c->prefix, Str(k));
+  for (size_t i = 0; i < c->nseen; ++i) {
+    if (strcasecmp(c->seen[i].name, name)) continue;
+    snprintf(what, sizeof(what), "option -%.100s set twice in this file (first as '%.100s' on line %lu%s): PETSc would let the later override the first without a word; keep one", name, c->seen[i].name, c->seen[i].line, strcmp(c->seen[i].name, name) ? ", and option names ignore case" : "; nested keys join with '_'");
+    return Bad(c, k, what);
+  }
+  if (c->nseen == c->maxseen) {
+    Seen *more = realloc(c->seen, (c->maxseen ? 2 * c->maxseen : 64) * sizeof(Seen));
+    if (!more) return 0; /* no memory for the check: PETSc's reading is unchanged */
+    c->seen = more, c->maxseen = c->maxseen ? 2 * c->maxseen : 64;
+  }
+  snprintf(c->seen[c->nseen].name, MAX_NAME, "%s", name);
+  c->seen[c->nseen++].line = (unsigned long)k->start_mark.line + 1;
+  return 0;
+}
+
+/* Layer under the prefix key_ (a mapping value, or a list item's pair) */
+static int Nested(Ctx *c, yaml_node_t *k, yaml_node_t *node)
+{
+  const size_t n = strlen(c->prefix);
+  int          bad;
+
+  snprintf(c->prefix + n, sizeof(c->prefix) - n, "%s_", Str(k));
+  bad = Layer(c, node);
+  c->prefix[n] = 0;
+  return bad;
+}
+
 /* A sequence item: a scalar, or a mapping of at most one pair (not a merge) read as a layer */
-static int Item(Ctx *c, yaml_node_t *it)
+static int Item(Ctx *c, yaml_node_t *k0, yaml_node_t *it)
 {
   yaml_node_pair_t *p;
 
@@ -47,20 +106,24 @@ static int Item(Ctx *c, yaml_node_t *it)
     if (!k || k->type != YAML_SCALAR_NODE) return Bad(c, it, "an option name must be a plain word");
     if (!strcmp(Str(k), "<<")) return Bad(c, k, "the merge key '<<' is not accepted inside a list");
   }
-  return Layer(c, it);
+  return Nested(c, k0, it);
 }
 
 /* A "<<" value: a mapping or a sequence of mappings */
 static int Merge(Ctx *c, yaml_node_t *v)
 {
-  if (v->type == YAML_MAPPING_NODE) return Layer(c, v);
-  if (v->type != YAML_SEQUENCE_NODE) return Bad(c, v, "'<<' needs a mapping or a list of mappings");
-  for (yaml_node_item_t *i = v->data.sequence.items.start; i < v->data.sequence.items.top; ++i) {
+  int bad = 0;
+
+  if (v->type != YAML_MAPPING_NODE && v->type != YAML_SEQUENCE_NODE) return Bad(c, v, "'<<' needs a mapping or a list of mappings");
+  c->merging++;
+  if (v->type == YAML_MAPPING_NODE) bad = Layer(c, v);
+  for (yaml_node_item_t *i = v->data.sequence.items.start; v->type == YAML_SEQUENCE_NODE && i < v->data.sequence.items.top && !bad; ++i) {
     yaml_node_t *m = yaml_document_get_node(c->doc, *i);
-    if (!m || m->type != YAML_MAPPING_NODE) return Bad(c, v, "'<<' needs a mapping or a list of mappings");
-    if (Layer(c, m)) return 1;
+    if (!m || m->type != YAML_MAPPING_NODE) bad = Bad(c, v, "'<<' needs a mapping or a list of mappings");
+    else bad = Layer(c, m);
   }
-  return 0;
+  c->merging--;
+  return bad;
 }
 
 /* A "$$" key's value: with the tag !include, the YAML file it names */
@@ -91,11 +154,17 @@ static int Value(Ctx *c, yaml_node_t *k, yaml_node_t *v)
 
   if (!strcmp(Str(k), "<<")) return Merge(c, v);
   if (!strncmp(Str(k), "$$", 2)) return Include(c, v);
+  if (!Str(k)[0] || strpbrk(Str(k), " \t")) { /* PETSc sets "-" or "-contact method", which nothing reads */
+    char what[256];
+    snprintf(what, sizeof(what), "key '%.100s': %s (PETSc would set an option nothing reads, and the run would go on without it)", Str(k), Str(k)[0] ? "an option name has no spaces: join its words with '_'" : "an empty key is not an option name");
+    return Bad(c, k, what);
+  }
   if (!strcmp(Str(k), "options_file") || !strcmp(Str(k), "options_file_yaml"))
     return Bad(c, k, "PETSc does not read an options file named inside a YAML file; give it on the command line, or include a YAML file with '$$name: !include file.yaml'");
-  if (v->type == YAML_MAPPING_NODE) return Layer(c, v);
+  if (Str(k)[0] == '-' || v->type != YAML_MAPPING_NODE) bad = Record(c, k); /* a mapping sets no option of its own */
+  if (!bad && v->type == YAML_MAPPING_NODE) return Nested(c, k, v);
   if (v->type == YAML_SEQUENCE_NODE)
-    for (yaml_node_item_t *i = v->data.sequence.items.start; i < v->data.sequence.items.top && !bad; ++i) bad = Item(c, yaml_document_get_node(c->doc, *i));
+    for (yaml_node_item_t *i = v->data.sequence.items.start; i < v->data.sequence.items.top && !bad; ++i) bad = Item(c, k, yaml_document_get_node(c->doc, *i));
   return bad;
 }
 
@@ -124,7 +193,7 @@ static int Stream(FILE *fp, int depth, char why[], size_t len)
   yaml_parser_t   parser;
   yaml_document_t doc;
   yaml_node_t    *root;
-  Ctx             c   = {&doc, why, len, depth};
+  Ctx             c   = {&doc, why, len, depth, "", 0, NULL, 0, 0};
   int             bad = 0;
 
   if (depth > MAX_DEPTH) return snprintf(why, len, "!include nested more than %d deep (does a file include itself?)", MAX_DEPTH), 1;
@@ -141,6 +210,7 @@ static int Stream(FILE *fp, int depth, char why[], size_t len)
     yaml_document_delete(&doc);
   } while (root && !bad);
   yaml_parser_delete(&parser);
+  free(c.seen);
   return bad;
 }
 

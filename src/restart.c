@@ -15,6 +15,7 @@
 #include <petscviewerhdf5.h>
 #include <hdf5.h>
 #include <stdlib.h>
+#include <sys/stat.h>
 
 #define NCOUNT  36 /* reals per rank in /restart/counters */
 #define NCOUNT9 35 /* format 9: without the Schur update's back-substitutions */
@@ -270,8 +271,10 @@ static PetscErrorCode CheckFile(SPApp a)
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(a->comm, &rank));
   if (rank == 0) {
-    FILE *fp = fopen(a->restartFile, "r");
+    FILE       *fp = fopen(a->restartFile, "r");
+    struct stat st;
     if (!fp) why = 1;
+    else if (!stat(a->restartFile, &st) && S_ISDIR(st.st_mode)) why = 4, fclose(fp); /* fopen opens a directory */
     else {
       hid_t        f;
       H5E_auto2_t  func;
@@ -294,6 +297,7 @@ static PetscErrorCode CheckFile(SPApp a)
   }
   PetscCallMPI(MPI_Bcast(&why, 1, MPI_INT, 0, a->comm));
   PetscCheck(why != 1, a->comm, PETSC_ERR_USER_INPUT, "-restart %s: no such file (give the .h5 or .h5.part file of the interrupted run)", a->restartFile);
+  PetscCheck(why != 4, a->comm, PETSC_ERR_USER_INPUT, "-restart %s: a directory, not a file (give the .h5 or .h5.part file of the interrupted run)", a->restartFile);
   PetscCheck(why != 2, a->comm, PETSC_ERR_USER_INPUT, "-restart %s: not a readable HDF5 file (truncated, or not spcontact output)", a->restartFile);
   PetscCheck(why != 3, a->comm, PETSC_ERR_USER_INPUT, "-restart %s: this run would write its output over that file; give the restarted run another -output_name", a->restartFile);
   PetscFunctionReturn(PETSC_SUCCESS);

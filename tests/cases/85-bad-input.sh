@@ -27,6 +27,11 @@ test_bad_input_catalogue() {
   printf '$$me: !include %s/self.yaml\n' "$CASE_DIR" > "$CASE_DIR/self.yaml"
   printf 'contact:\n  method: alm\n  alpha: 100\nload_steps: 2\ncontact:\n  method: penalty\n' > "$CASE_DIR/twice.yaml"
   printf 'contact:\n  method: alm\n  method: penalty\n' > "$CASE_DIR/twice_nested.yaml"
+  printf 'contact_method: alm\n-contact_method: penalty\n' > "$CASE_DIR/dash.yaml"
+  printf 'contact_method: alm\nContact_Method: penalty\n' > "$CASE_DIR/case.yaml"
+  printf 'contact:\n  method: alm\n  alpha: 100\ncontact_method: penalty\n' > "$CASE_DIR/joined.yaml"
+  printf 'contact method: alm\n' > "$CASE_DIR/space.yaml"
+  printf '"": 3\n' > "$CASE_DIR/empty.yaml"
   sed -e "s|@DIR@|$CASE_DIR|g" -e "s|@LONG@|$(printf 'x%.0s' {1..300})|" <<'CASES' | bad_input_cases
 contact label on cells|input/hertz2d.opts|-contact_label "Cell Sets" -contact_values 1
 contact value without points|input/hertz2d.opts|-contact_values 99
@@ -119,6 +124,19 @@ YAML options file including a missing file|input/hertz2d.opts|-options_file_yaml
 YAML options file including itself|input/hertz2d.opts|-options_file_yaml @DIR@/self.yaml
 YAML key given twice (not valid YAML; PETSc let the later override the first, exit 0)|input/hertz2d.opts|-options_file_yaml @DIR@/twice.yaml
 YAML key given twice in a nested mapping|input/hertz2d.opts|-options_file_yaml @DIR@/twice_nested.yaml
+options file that is a directory (was a PETSc error wall)|input/hertz2d.opts|-options_file @DIR@
+YAML file that is a directory (was: not valid YAML, input error)|input/hertz2d.opts|-options_file_yaml @DIR@
+mesh file that is a directory (was: no $MeshFormat header)|input/hertz2d.opts|-mesh_file @DIR@
+mesh file that is the .geo (was: no $MeshFormat header)|input/hertz2d.opts|-mesh_file input/hertz2d.geo
+mesh scale zero (was: flat cells)|input/hertz2d.opts|-dm_plex_scale 0
+mesh scale negative (3D: was inverted cells, reorder the vertices)|input/block3d.opts|-dm_plex_scale -1
+mesh scale not a number (was: flat cells)|input/elastic2d.opts|-dm_plex_scale nan
+restart file that is a directory (was: not a readable HDF5 file)|input/hertz2d.opts|-restart @DIR@
+YAML key with the option's dash (PETSc read --contact_method: the other spelling ran, exit 0)|input/hertz2d.opts|-options_file_yaml @DIR@/dash.yaml
+YAML option in two cases (the later silently won, exit 0)|input/hertz2d.opts|-options_file_yaml @DIR@/case.yaml
+YAML option nested and joined (the later silently won, exit 0)|input/hertz2d.opts|-options_file_yaml @DIR@/joined.yaml
+YAML key with a space (ran without it, one warning at the end, exit 0)|input/hertz2d.opts|-options_file_yaml @DIR@/space.yaml
+YAML key empty (set the option -, one warning at the end, exit 0)|input/hertz2d.opts|-options_file_yaml @DIR@/empty.yaml
 bc type unknown|input/hertz2d.opts|-bc_1_type force_field
 bc component out of range (2D)|input/hertz2d.opts|-bc_0_components 2
 bc component out of range (3D)|input/hertz3d.opts|-bc_0_components 3
@@ -221,7 +239,59 @@ creep tolerance infinite|input/friction_block2d.opts|-contact_friction_creep_rto
 number option without its value (another option follows)|input/hertz2d.opts|-load_steps -quiet
 word option without its value (last on the line)|input/hertz2d.opts|-contact_method
 indexed option without its value|input/hertz2d.opts|-contact_obstacle_0_mu
+pair on one body's facets, that body held in x only (was: 13 cut-backs, exit 2)|input/patch_4_5.opts|-contact_pair_0_slave_values 4 -contact_pair_0_master_values 3
+a second body with no condition and in no pair (was: 13 cut-backs, exit 2)|input/hertz2d_twobody.opts|-bc_0_values 6 -contact_pair_0_slave_values 5
 CASES
+}
+
+# Each body held on its own (QA helper 30): bc-balance.c checks the mesh as one assembly, so a body
+# that the contact pairs do not link to a held one passed and its solve stalled into the cut-backs
+# (13 cut-backs, exit 2, in each case below). The bodies are the connected cells; the line is the
+# same on 1, 2 and 3 ranks. The patch test's upper block with the pair on its own facets (held in x
+# only); B6's disc with no condition and in no pair; the patch mesh without contact, its upper block
+# free under a pressure; two of three blocks that a pair links, held by nothing; both blocks held
+# run, and the three blocks linked by two pairs (the shipped pair cases: tests pairs, patch)
+test_bad_input_free_body_ranks() {
+  local rc=0 np
+  for np in 1 2 3; do
+    spc "$CASE_DIR/p$np.txt" $np -options_file input/patch_4_5.opts -contact_pair_0_slave_values 4 -contact_pair_0_master_values 3 -output_dir "$CASE_DIR" -output_name p$np
+    assert_eq "body held in x only refused on $np rank(s)" "$(grep -c "^spcontact: error: nothing holds the body in the box (0, 0.5)..(1, 1) (15 cells): its supports (Dirichlet components) leave it free to move along (0, 1), and no contact pair names its facets" "$CASE_DIR/p$np.txt")" 1 || rc=1
+    spc "$CASE_DIR/d$np.txt" $np -options_file input/hertz2d_twobody.opts -bc_0_values 6 -contact_pair_0_slave_values 5 -output_dir "$CASE_DIR" -output_name d$np
+    assert_eq "disc held by nothing refused on $np rank(s)" "$(grep -c "^spcontact: error: nothing holds the body in the box (0, 0)..(1, 1) (9580 cells): no Dirichlet condition acts on it and there is no obstacle, and no contact pair names its facets" "$CASE_DIR/d$np.txt")" 1 || rc=1
+    spc "$CASE_DIR/n$np.txt" $np -mesh_file build/mesh/patch_4_5.msh -bc_0_type dirichlet -bc_0_values 1 -bc_0_components 0,1 -bc_1_type pressure -bc_1_values 4 -bc_1_value 0.01 -output_dir "$CASE_DIR" -output_name n$np
+    assert_eq "free block without contact refused on $np rank(s)" "$(grep -c "^spcontact: error: nothing holds the body in the box (0, 0.5)..(1, 1) (15 cells): no Dirichlet condition acts on it and there is no obstacle, and there are no contact pairs" "$CASE_DIR/n$np.txt")" 1 || rc=1
+    # its rollers' components swapped (u_y on its left edge, u_x on its bottom): a rotation; and
+    # the lower block alone on a frictionless plane, the upper one held: free along x
+    spc "$CASE_DIR/r$np.txt" $np -mesh_file build/mesh/patch_4_5.msh -bc_0_type dirichlet -bc_0_values 1 -bc_0_components 0,1 -bc_1_type dirichlet -bc_1_values 5 -bc_1_components 1 -bc_2_type dirichlet -bc_2_values 3 -bc_2_components 0 -bc_3_type pressure -bc_3_values 4 -bc_3_value 0.01 -output_dir "$CASE_DIR" -output_name r$np
+    assert_eq "free rotation of one body refused on $np rank(s)" "$(grep -c "^spcontact: error: nothing holds the body in the box (0, 0.5)..(1, 1) (15 cells): its supports (Dirichlet components) leave it free to turn about the point (0, 0.5), and there are no contact pairs" "$CASE_DIR/r$np.txt")" 1 || rc=1
+    spc "$CASE_DIR/o$np.txt" $np -mesh_file build/mesh/patch_4_5.msh -bc_0_type dirichlet -bc_0_values 4 -bc_0_components 0,1 -bc_1_type pressure -bc_1_values 6 -bc_1_value 0.01 -contact_values 1 -contact_obstacle_0_type plane -contact_obstacle_0_point 0,0 -contact_obstacle_0_normal 0,1 -output_dir "$CASE_DIR" -output_name o$np
+    assert_eq "body on a frictionless plane free along x refused on $np rank(s)" "$(grep -c "^spcontact: error: nothing holds the body in the box (0, 0)..(1, 0.5) (8 cells): its supports (Dirichlet components, frictionless planes at its slave points) leave it free to move along (1, 0)" "$CASE_DIR/o$np.txt")" 1 || rc=1
+  done
+  # three stacked unit blocks (gmsh; curves 10k+1 bottom, 10k+3 top, 10k+4 left of block k): the
+  # lowest fixed, every left edge held in x, a pair between the upper two only: those two together
+  # are free along y; with a second pair down to the lowest block the run converges
+  {
+    echo "Geometry.AutoCoherence = 0;"
+    echo "For k In {0:2}"
+    echo "  p = newp; Point(p) = {0, k, 0, 0.25}; Point(p+1) = {1, k, 0, 0.25}; Point(p+2) = {1, k+1, 0, 0.25}; Point(p+3) = {0, k+1, 0, 0.25};"
+    echo "  l = newl; Line(l) = {p, p+1}; Line(l+1) = {p+1, p+2}; Line(l+2) = {p+2, p+3}; Line(l+3) = {p+3, p};"
+    echo "  cl = newll; Curve Loop(cl) = {l, l+1, l+2, l+3}; s = news; Plane Surface(s) = {cl}; Transfinite Surface{s}; Recombine Surface{s};"
+    echo "  Physical Curve(10*k+1) = {l}; Physical Curve(10*k+3) = {l+2}; Physical Curve(10*k+4) = {l+3}; Physical Surface(100+k) = {s};"
+    echo "EndFor"
+  } > "$CASE_DIR/three.geo"
+  gmsh -v 2 -2 -format msh22 -o "$CASE_DIR/three.msh" "$CASE_DIR/three.geo" >/dev/null || { echo "gmsh failed on three.geo"; return 1; }
+  local three="-mesh_file $CASE_DIR/three.msh -bc_0_type dirichlet -bc_0_values 1 -bc_0_components 0,1 -bc_1_type dirichlet -bc_1_values 4,14,24 -bc_1_components 0 -bc_2_type pressure -bc_2_values 23 -bc_2_value 0.01 -contact_pair_0_slave_values 21 -contact_pair_0_master_values 13"
+  for np in 1 2 3; do
+    # shellcheck disable=SC2086
+    spc "$CASE_DIR/g$np.txt" $np $three -output_dir "$CASE_DIR" -output_name g$np
+    assert_eq "two linked bodies held by nothing refused on $np rank(s)" "$(grep -c "^spcontact: error: nothing holds the 2 bodies that contact pairs link in the box (0, 1)..(1, 3) (32 cells): their supports (Dirichlet components) leave them free to move along (0, 1), and no contact pair links them to a held body" "$CASE_DIR/g$np.txt")" 1 || rc=1
+  done
+  # shellcheck disable=SC2086
+  spc "$CASE_DIR/g.txt" 2 $three -contact_pair_1_slave_values 11 -contact_pair_1_master_values 3 -output_dir "$CASE_DIR" -output_name g -output_fields false || rc=1
+  assert_eq "three blocks linked by two pairs: runs" "$(sval "$CASE_DIR/g.txt" converged)" yes || rc=1
+  spc "$CASE_DIR/ok.txt" 2 -mesh_file build/mesh/patch_4_5.msh -bc_0_type dirichlet -bc_0_values 1,4 -bc_0_components 0,1 -bc_1_type pressure -bc_1_values 6 -bc_1_value 0.01 -output_dir "$CASE_DIR" -output_name ok -output_fields false || rc=1
+  assert_eq "both blocks held, no contact: runs" "$(sval "$CASE_DIR/ok.txt" converged)" yes || rc=1
+  return $rc
 }
 
 # A 2D gmsh mesh out of the x-y plane (QA helper 29): PETSc's reader keeps x and y and drops z, so

@@ -245,6 +245,18 @@ test_options_yaml() {
   spc "$CASE_DIR/cmd2.txt" 1 -options_file input/block2d.opts -contact_method alm -contact_alpha 100 -dm_plex_box_faces 6,10 -quiet -output_dir "$CASE_DIR" -output_name cmd2 || return 1
   same_summary "$CASE_DIR/cmd2.txt" "$CASE_DIR/inc.txt" 0 contact_method newton_iterations displacement_max dofs cells || rc=1
   assert_eq "cells of the 6 x 10 box" "$(sval "$CASE_DIR/inc.txt" cells)" 60 || rc=1
+  # one option under two spellings in one file is refused (QA helper 30: the later won without a
+  # word), but a key from a '<<' merge may be overridden, and so may an included file's option
+  printf 'contact:\n  method: alm\n  alpha: 100\nquiet: true\ncontact_alpha: 1000\n' > "$CASE_DIR/two.yaml"
+  spc "$CASE_DIR/two.txt" 1 -options_file input/block2d.opts -options_file_yaml "$CASE_DIR/two.yaml" -output_dir "$CASE_DIR" -output_name two
+  assert_eq "nested and joined spelling refused" "$(grep -c "^spcontact: error: -options_file_yaml $CASE_DIR/two.yaml: line 5: option -contact_alpha set twice in this file (first as 'contact_alpha' on line 3; nested keys join with '_')" "$CASE_DIR/two.txt")" 1 || rc=1
+  printf 'base: &b\n  method: alm\n  alpha: 100\ncontact:\n  <<: *b\n  method: penalty\n' > "$CASE_DIR/merge.yaml"
+  spc "$CASE_DIR/merge.txt" 1 -options_file input/block2d.opts -options_file_yaml "$CASE_DIR/merge.yaml" -options_left false -output_dir "$CASE_DIR" -output_name merge || rc=1
+  assert_eq "merged key overridden: method" "$(sval "$CASE_DIR/merge.txt" contact_method)" penalty || rc=1
+  assert_eq "merged key kept: alpha" "$(sval "$CASE_DIR/merge.txt" contact_alpha)" 100. || rc=1
+  printf '$$base: !include input/block2d-sweep.yaml\ncontact_alpha: 1000\n' > "$CASE_DIR/over.yaml"
+  spc "$CASE_DIR/over.txt" 1 -options_file input/block2d.opts -options_file_yaml "$CASE_DIR/over.yaml" -output_dir "$CASE_DIR" -output_name over || rc=1
+  assert_eq "included option overridden" "$(sval "$CASE_DIR/over.txt" contact_alpha)" 1000. || rc=1
   return $rc
 }
 
