@@ -260,6 +260,8 @@ typedef struct {
   SPPointPrev     prev;            /* the converged step before the last (the stuck points' predictor) */
   PetscInt        keepFacet;       /* pairs: master facet gid of the last Newton iterate in this step
                                       (-1: none), kept while it stays a near-best candidate */
+  PetscInt        lastFacet;       /* pairs: the facet kept before keepFacet in this step (-1: none) */
+  PetscInt        facetReturns;    /* pairs: times in this step the kept facet went back to lastFacet */
 } SPContactPoint;
 
 struct _n_SPContact {
@@ -417,6 +419,7 @@ PETSC_EXTERN PetscErrorCode SPContactPairsSetUp(SPContact);
 PETSC_EXTERN PetscErrorCode SPContactPairsExchange(SPContact, const PetscScalar[]);
 PETSC_EXTERN PetscErrorCode SPContactPairsProject(SPContact, PetscInt, PetscInt *, PetscReal *, PetscReal *, PetscReal[]);
 PETSC_EXTERN void           SPContactPairsKeepFacets(SPContact);
+PETSC_EXTERN void           SPContactPairsForgetFacets(SPContactPoint *);
 PETSC_EXTERN PetscErrorCode SPContactPairsDestroy(SPContact);
 PETSC_EXTERN PetscBool      SPContactGeometricTangent(SPContact);
 PETSC_EXTERN PetscErrorCode SPOutputWriteXdmf(SPOutput, PetscBool);

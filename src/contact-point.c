@@ -59,7 +59,7 @@ static PetscErrorCode CollectPoints(SPContact c)
     k                = off - c->rstart;
     c->pt[k].vertex  = v;
     c->pt[k].geo.elem = SP_ELEM_NONE;
-    c->pt[k].keepFacet = -1;
+    SPContactPairsForgetFacets(&c->pt[k]);
     PetscCall(PetscSectionGetOffset(cs, v, &coff));
     for (PetscInt d = 0; d < c->dim; ++d) c->pt[k].X[d] = PetscRealPart(ca[coff + d]);
   }
@@ -320,7 +320,7 @@ PetscErrorCode SPContactSaveState(SPContact c)
 {
   PetscFunctionBeginUser;
   if (!c->enabled) PetscFunctionReturn(PETSC_SUCCESS);
-  for (PetscInt i = 0; i < c->n; ++i) c->saved[i] = c->pt[i].st, c->pt[i].keepFacet = -1;
+  for (PetscInt i = 0; i < c->n; ++i) c->saved[i] = c->pt[i].st, SPContactPairsForgetFacets(&c->pt[i]);
   PetscCall(SPShiftAccelReset(c->accel)); /* a new load step: a new map */
   PetscCall(SPShiftAccelReset(c->accelT));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -333,7 +333,7 @@ PetscErrorCode SPContactRestoreState(SPContact c)
   for (PetscInt i = 0; i < c->n; ++i) {
     c->pt[i].st               = c->saved[i];
     c->pt[i].st.inactiveCount = 0;
-    c->pt[i].keepFacet        = -1;
+    SPContactPairsForgetFacets(&c->pt[i]);
     c->nhist[i]               = 0;
   }
   PetscCall(SPShiftAccelReset(c->accel));

@@ -93,7 +93,7 @@ test_cattaneo2d_three_steps_fresh_anchor() {
 # -bc_2_value 0: a frictionless Hertz contact of the two curved, non-matching contact meshes, in
 # 40 steps): converges without a cut-back, pressure within 3 % of Hertz in L2 and its peak within
 # 2 % of p0 at the measured P, tangential force below 1e-3 P; 1 and 2 ranks identical to 1e-8.
-# Before the segment-keeping band was widened to the end tolerance (src/contact-pairs.c) this run
+# Before a point's segment-keeping band widened after two returns (src/contact-pairs.c) this run
 # stalled at load 0.145 in a 2-cycle of a point either side of a master vertex (7 cut-backs, exit 2)
 test_cattaneo2d_rigid_frictionless() {
   local rc=0 np
