@@ -531,9 +531,11 @@ test_contact_deep_start_warning() {
   assert_eq "a warning at 1.2 h" "$(grep -c 'start inside an obstacle by more than their facet size (up to 0.3, 1.2 facet sizes' "$CASE_DIR/h12.txt")" 1 || rc=1
   # pairs, after the first search: B5 with the lower block's bottom (value 1) as the slave, 0.5
   # below its master (the same block's top): 440 Newton iterations to exit 2 without a word on
-  # the cause before; now the warning, on 1 and 2 ranks (one cut-back here keeps the failure short)
+  # the cause before; now the warning, on 1 and 2 ranks (one cut-back here keeps a failure short).
+  # The upper block's bottom (3) stays a slave too, so the pair links the two bodies: with value 1
+  # alone the upper block is held by nothing, which the body check refuses before the solve
   for np in 1 2; do
-    spc "$CASE_DIR/pair$np.txt" $np -options_file input/patch_4_5.opts -contact_pair_0_slave_values 1 -load_max_cutbacks 1 -output_dir "$CASE_DIR" -output_name pair$np
+    spc "$CASE_DIR/pair$np.txt" $np -options_file input/patch_4_5.opts -contact_pair_0_slave_values 1,3 -load_max_cutbacks 1 -output_dir "$CASE_DIR" -output_name pair$np
     assert_eq "pair warning on $np rank(s)" "$(grep -c '^spcontact: warning: 5 contact point(s) start inside a master surface by more than their facet size (up to 0.5, 2 facet sizes, pair 0): check -contact_pair_0_slave_values and -contact_pair_0_master_values' "$CASE_DIR/pair$np.txt")" 1 || rc=1
   done
   spc "$CASE_DIR/b5.txt" 1 -options_file input/patch_4_5.opts -output_dir "$CASE_DIR" -output_name b5 || rc=1
