@@ -200,23 +200,34 @@ static PetscErrorCode Run(int *code)
 /* Before PetscInitialize: -version (or --version) prints spcontact's version and PETSc's and exits
    (PETSc's own -version printed PETSc's and then ran a default box to an error); --help and -h
    are -help; no arguments at all (and no PETSC_OPTIONS, PETSC_OPTIONS_YAML or .petscrc to take
-   options from) is a usage line, where a default box ran into "nothing holds the body". Returns
-   the exit code, or -1 to go on. */
-static int EarlyArguments(int argc, char **argv)
+   options from) is a usage line, where a default box ran into "nothing holds the body". A help
+   run also gets -no_signal_handler: PETSc prints the first part of the help inside
+   PetscInitialize, with its own SIGPIPE handler installed, so "spcontact -help | head -c 10" died
+   in an error wall (19 of 20 runs) before main could restore the default action. Returns the exit
+   code, or -1 to go on (*argv then possibly a new array, which PETSc keeps). */
+static int EarlyArguments(int *argc, char ***argv)
 {
-  static char helpArg[] = "-help";
+  static char helpArg[] = "-help", quietSignals[] = "-no_signal_handler";
+  int         help      = 0;
+  char      **args;
 
-  if (argc == 1 && !getenv("PETSC_OPTIONS") && !getenv("PETSC_OPTIONS_YAML") && access(".petscrc", F_OK)) {
+  if (*argc == 1 && !getenv("PETSC_OPTIONS") && !getenv("PETSC_OPTIONS_YAML") && access(".petscrc", F_OK)) {
     fprintf(stderr, "spcontact: error: no problem given: run spcontact -options_file FILE.opts (the cases of input/, e.g. input/hertz2d.opts; the README's quick start); spcontact -help lists every option\n");
     return 1;
   }
-  for (int i = 1; i < argc; ++i) {
-    if (!strcmp(argv[i], "-version") || !strcmp(argv[i], "--version")) {
+  for (int i = 1; i < *argc; ++i) {
+    if (!strcmp((*argv)[i], "-version") || !strcmp((*argv)[i], "--version")) {
       printf("spcontact %s (PETSc %d.%d.%d)\n", SP_VERSION, PETSC_VERSION_MAJOR, PETSC_VERSION_MINOR, PETSC_VERSION_SUBMINOR);
       return 0;
     }
-    if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) argv[i] = helpArg;
+    if (!strcmp((*argv)[i], "--help") || !strcmp((*argv)[i], "-h")) (*argv)[i] = helpArg;
+    if (!strcmp((*argv)[i], "-help")) help = 1;
   }
+  if (!help || !(args = (char **)malloc((size_t)(*argc + 2) * sizeof(char *)))) return -1;
+  for (int i = 0; i < *argc; ++i) args[i] = (*argv)[i];
+  args[(*argc)++] = quietSignals;
+  args[*argc]     = NULL;
+  *argv           = args;
   return -1;
 }
 
@@ -226,7 +237,7 @@ int main(int argc, char **argv)
   int            code    = 2;
   OneLineError   oneLine = {"", 0};
 
-  if ((code = EarlyArguments(argc, argv)) >= 0) return code;
+  if ((code = EarlyArguments(&argc, &argv)) >= 0) return code;
   code = 2;
   if (SPCheckOptionsFiles(argc, argv)) return 1; /* before PetscInitialize reads them */
   SingletonMPI();
