@@ -47,6 +47,7 @@ PETSC_EXTERN PetscErrorCode SPMeshGetSerialNumbers(DM, const PetscInt **);
 PETSC_EXTERN PetscErrorCode SPMeshCheckLabel(DM, const char[], PetscInt, const PetscInt[], const char[]);
 PETSC_EXTERN PetscErrorCode SPPartitionerSetMetis(DM);
 PETSC_EXTERN PetscErrorCode SPMeshGetLabelFacets(DM, const char[], PetscInt, const PetscInt[], PetscInt *, PetscInt **);
+PETSC_EXTERN PetscErrorCode SPMeshPointVertices(DM, PetscInt, PetscInt, PetscInt, PetscInt *, PetscInt[], PetscInt); /* a cell's or facet's vertices by a cone walk */
 PETSC_EXTERN PetscErrorCode SPMeshFacetGeometry(DM, PetscInt, PetscInt, PetscReal[3], PetscReal[3], PetscReal *);
 PETSC_EXTERN PetscErrorCode SPMeshCreateCompletedLabel(DM, const char[], PetscInt, const PetscInt[], const char[], DMLabel *);
 

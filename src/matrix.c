@@ -39,35 +39,6 @@ typedef struct {
   PetscInt    maxNbr;             /* bound on the neighbour list length (with repeats) */
 } Graph;
 
-/* The vertices of cell c, by walking cones down to depth 0 (cheaper than a transitive closure) */
-static PetscErrorCode CellVertices(DM dm, PetscInt c, PetscInt vStart, PetscInt vEnd, PetscInt *n, PetscInt verts[], PetscInt maxn)
-{
-  PetscInt stack[256], top = 0;
-
-  PetscFunctionBeginUser;
-  *n           = 0;
-  stack[top++] = c;
-  while (top) {
-    const PetscInt  p = stack[--top];
-    const PetscInt *cone;
-    PetscInt        nc;
-    if (p >= vStart && p < vEnd) {
-      PetscBool seen = PETSC_FALSE;
-      for (PetscInt k = 0; k < *n && !seen; ++k) seen = verts[k] == p ? PETSC_TRUE : PETSC_FALSE;
-      if (!seen) {
-        PetscCheck(*n < maxn, PETSC_COMM_SELF, PETSC_ERR_SUP, "cell %" PetscInt_FMT " has more than %" PetscInt_FMT " vertices", c, maxn);
-        verts[(*n)++] = p;
-      }
-      continue;
-    }
-    PetscCall(DMPlexGetConeSize(dm, p, &nc));
-    PetscCall(DMPlexGetCone(dm, p, &cone));
-    PetscCheck(top + nc <= 256, PETSC_COMM_SELF, PETSC_ERR_SUP, "cone walk of cell %" PetscInt_FMT " too deep", c);
-    for (PetscInt k = 0; k < nc; ++k) stack[top++] = cone[k];
-  }
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 static PetscErrorCode GraphCreate(DM dm, Graph *g)
 {
   PetscSection ls, gs;
@@ -95,12 +66,12 @@ static PetscErrorCode GraphCreate(DM dm, Graph *g)
   PetscCall(PetscMalloc1(nc + 1, &g->cellOff));
   g->cellOff[0] = 0;
   for (PetscInt c = 0; c < nc; ++c) {
-    PetscCall(CellVertices(dm, g->cStart + c, g->vStart, g->vEnd, &n, verts, 64));
+    PetscCall(SPMeshPointVertices(dm, g->cStart + c, g->vStart, g->vEnd, &n, verts, 64));
     g->cellOff[c + 1] = g->cellOff[c] + n;
   }
   PetscCall(PetscMalloc1(g->cellOff[nc], &g->cellVert));
   for (PetscInt c = 0; c < nc; ++c) {
-    PetscCall(CellVertices(dm, g->cStart + c, g->vStart, g->vEnd, &n, verts, 64));
+    PetscCall(SPMeshPointVertices(dm, g->cStart + c, g->vStart, g->vEnd, &n, verts, 64));
     for (PetscInt k = 0; k < n; ++k) g->cellVert[g->cellOff[c] + k] = verts[k] - g->vStart;
   }
   /* vertices -> cells */

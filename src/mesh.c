@@ -410,6 +410,36 @@ static PetscErrorCode CheckDimension(MPI_Comm comm, const char file[], DM dm)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The vertices of mesh point c (a cell or a facet), by walking cones down to depth 0: cheaper than
+   a transitive closure, which asks every point's cell type (the matrix graph; bc-bodies.c) */
+PetscErrorCode SPMeshPointVertices(DM dm, PetscInt c, PetscInt vStart, PetscInt vEnd, PetscInt *n, PetscInt verts[], PetscInt maxn)
+{
+  PetscInt stack[256], top = 0;
+
+  PetscFunctionBeginUser;
+  *n           = 0;
+  stack[top++] = c;
+  while (top) {
+    const PetscInt  p = stack[--top];
+    const PetscInt *cone;
+    PetscInt        nc;
+    if (p >= vStart && p < vEnd) {
+      PetscBool seen = PETSC_FALSE;
+      for (PetscInt k = 0; k < *n && !seen; ++k) seen = verts[k] == p ? PETSC_TRUE : PETSC_FALSE;
+      if (!seen) {
+        PetscCheck(*n < maxn, PETSC_COMM_SELF, PETSC_ERR_SUP, "mesh point %" PetscInt_FMT " has more than %" PetscInt_FMT " vertices", c, maxn);
+        verts[(*n)++] = p;
+      }
+      continue;
+    }
+    PetscCall(DMPlexGetConeSize(dm, p, &nc));
+    PetscCall(DMPlexGetCone(dm, p, &cone));
+    PetscCheck(top + nc <= 256, PETSC_COMM_SELF, PETSC_ERR_SUP, "cone walk of mesh point %" PetscInt_FMT " too deep", c);
+    for (PetscInt k = 0; k < nc; ++k) stack[top++] = cone[k];
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode SPMeshCreate(MPI_Comm comm, DM *dm)
 {
   char file[PETSC_MAX_PATH_LEN] = "", partitioner[64] = "metis";
