@@ -180,14 +180,34 @@ static PetscErrorCode CheckIntRange(MPI_Comm comm, const char name[], const char
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Refused if name is an integer list (label values, components, box faces) and its value holds a
+   range a-b: PETSc reads it as a, ..., b-1, so "-bc_0_values 1-3" held labels 1 and 2 and left 3
+   free without a word where a user reads 1, 2, 3 (and "3-1" ended in PETSc's line about a
+   "decreasing list", which named no option) */
+static PetscErrorCode CheckNoRange(MPI_Comm comm, const char name[], const char shown[], const char rest[])
+{
+  static const char *const lists[] = {"_values", "_components", "_faces"};
+  const char              *v = rest + 1, *p = v, *a;
+  const size_t             n = strcspn(v, " ");
+
+  PetscFunctionBeginUser;
+  if (!HasValue(rest) || !IsInt(name) || !HasTail(name, lists, PETSC_STATIC_ARRAY_LENGTH(lists))) PetscFunctionReturn(PETSC_SUCCESS);
+  while (p < v + n && !(p > v && isdigit((unsigned char)p[-1]) && *p == '-' && isdigit((unsigned char)p[1]))) ++p;
+  if (p == v + n) PetscFunctionReturn(PETSC_SUCCESS);
+  for (a = p; a > v && isdigit((unsigned char)a[-1]);) --a;
+  SETERRQ(comm, PETSC_ERR_USER_INPUT, "%s %.*s: PETSc reads a range a-b (here %.*s) without its end, as a, ..., b-1; write the values out as a list", shown, (int)n, v, (int)(p + 1 + strspn(p + 1, "0123456789:") - a), a);
+}
+
 /* Collective, before the set-up reads any option: values joined by '=', PETSc's named values in
-   numeric options, integers out of PetscInt's range */
+   numeric options, integers out of PetscInt's range,
+   ranges in integer lists */
 PetscErrorCode SPOptionsCheckNamedValues(MPI_Comm comm)
 {
   PetscFunctionBeginUser;
   PetscCall(ForEachOption(comm, CheckGlued));
   PetscCall(ForEachOption(comm, CheckNamed));
   PetscCall(ForEachOption(comm, CheckIntRange));
+  PetscCall(ForEachOption(comm, CheckNoRange));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -91,6 +91,8 @@ suction on a block on a plane with friction (friction holds no pull-off; was 13 
 plane normal pointing away from the body|input/block2d.opts|-contact_obstacle_0_normal 0,-1
 label value given twice (the load was applied twice)|input/block2d.opts|-bc_1_values 3,3
 contact label value given twice|input/block2d.opts|-contact_values 1,1
+label value range, read by PETSc without its end (1-3: labels 1, 2 held, 3 free)|input/hertz2d_twobody.opts|-bc_0_values 1-3
+decreasing label value range in a pair (was PETSc's line naming no option)|input/hertz2d_twobody.opts|-contact_pair_0_slave_values 3-1
 net shear without contact (advice without friction)|input/elastic2d.opts|-bc_1_components 1 -bc_2_value 1,0.5
 PETSC_DEFAULT for a computed default (was refused as -contact_penalty -2)|input/hertz2d.opts|-contact_penalty PETSC_DEFAULT
 DECIDE for spcontact's real (read as -1)|input/hertz2d.opts|-contact_alpha decide
@@ -578,6 +580,7 @@ test_bad_input_value_names_option() {
 -load_steps 4294967298|-load_steps 4294967298: 4294967298 is larger than the largest integer of this PETSc build (2147483647), which would read it as another number; give a smaller value
 -dm_refine 4294967296|-dm_refine 4294967296: 4294967296 is larger than the largest integer of this PETSc build (2147483647), which would read it as another number; give a smaller value
 -contact_values 1-4294967297|-contact_values 1-4294967297: 4294967297 is larger than the largest integer of this PETSc build (2147483647), which would read it as another number; give a smaller value
+-bc_0_values 1,6-8|-bc_0_values 1,6-8: PETSc reads a range a-b (here 6-8) without its end, as a, ..., b-1; write the values out as a list
 -snes_max_it -99999999999999999999|-snes_max_it -99999999999999999999: 99999999999999999999 is larger than the largest integer of this PETSc build (2147483647), which would read it as another number; give a smaller value
 CASES
   # a real option with an integer's digits past that range runs (E in Pa)
