@@ -5,7 +5,9 @@
    obstacle point or load would otherwise continue a run whose converged steps solved another
    problem. Solver options, output options and -load_steps may change. The values are read from
    PetscOptionsGetAll's string, which does not mark an option used (the unused-option report);
-   options the run does not use (a plane's radius, put back as unread) are left out on both sides. */
+   options the run does not use (a plane's radius, put back as unread) are left out on both sides.
+   The string holds the options given, not the defaults taken: one given on one side only is
+   refused even at its default, and the line says so. */
 #include <spcontact-impl.h>
 #include <ctype.h>
 #include <stdlib.h>
@@ -146,7 +148,8 @@ static PetscErrorCode CompareOneWay(MPI_Comm comm, const char file[], const char
     const char  *found;
     PetscCall(PetscSNPrintf(va, sizeof(va), "%.*s", (int)PetscMin(m, sizeof(va) - 1), p + n + 1));
     found = Find(b, name, vb, sizeof(vb));
-    PetscCheck(found, comm, PETSC_ERR_USER_INPUT, "-restart %s: %s %s is given %s and not %s; restart with the interrupted run's options (the problem would change)", file, name, va, there ? "there" : "here", there ? "here" : "there");
+    PetscCheck(found || !there, comm, PETSC_ERR_USER_INPUT, "-restart %s: %s %s was given to the interrupted run and is not given here; give it here too (the problem would change)", file, name, va);
+    PetscCheck(found, comm, PETSC_ERR_USER_INPUT, "-restart %s: %s %s is given here and was not given to the interrupted run, which took its default; leave it out if %s is the default (-help shows it), else restart with the interrupted run's options (the problem would change)", file, name, va, va);
     PetscCheck(SameValue(va, vb), comm, PETSC_ERR_USER_INPUT, "-restart %s: %s is %s there and %s here; restart with the interrupted run's options (the problem would change)", file, name, there ? va : vb, there ? vb : va);
   }
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -228,6 +228,13 @@ EOF
   # a value with a space is compared whole (QA helper 25: only its first word was)
   spc "$CASE_DIR/r2.txt" 1 -options_file input/friction_block2d.opts -bc_1_value "0.0015, 0.001" -output_dir "$CASE_DIR" -output_name r2 -restart "$CASE_DIR/f.h5.part"
   assert_eq "restart with a changed second word of a value: refused" "$(grep -c '^spcontact: error: -restart .*-bc_1_value is 0.0015,0 there and 0.0015, 0.001 here' "$CASE_DIR/r2.txt")" 1 || rc=1
+  # an option on one side only is refused even at its default (the file holds the options given,
+  # not the defaults taken), and the line says which side and what to do
+  sed '/^-material_nu/d' input/friction_block2d.opts >"$CASE_DIR/nomu.opts"
+  spc "$CASE_DIR/r4.txt" 1 -options_file "$CASE_DIR/nomu.opts" -output_dir "$CASE_DIR" -output_name r4 -restart "$CASE_DIR/f.h5.part"
+  assert_eq "option given there only: refused, give it here" "$(grep -c "^spcontact: error: -restart $CASE_DIR/f.h5.part: -material_nu 0 was given to the interrupted run and is not given here; give it here too (the problem would change)$" "$CASE_DIR/r4.txt")" 1 || rc=1
+  spc "$CASE_DIR/r5.txt" 1 -options_file input/friction_block2d.opts -contact_two_pass 0 -output_dir "$CASE_DIR" -output_name r5 -restart "$CASE_DIR/f.h5.part"
+  assert_eq "option given here only: refused, leave it out if at its default" "$(grep -c "^spcontact: error: -restart $CASE_DIR/f.h5.part: -contact_two_pass 0 is given here and was not given to the interrupted run, which took its default; leave it out if 0 is the default (-help shows it), else restart with the interrupted run's options (the problem would change)$" "$CASE_DIR/r5.txt")" 1 || rc=1
   return $rc
 }
 
