@@ -65,6 +65,8 @@ PETSC_EXTERN PetscErrorCode SPCornerCheckDestroy(SPCornerCheck *);
 /* mesh.c: the coordinate field tabulated at a quadrature (NULL: PETSc per cell) and a cell's
    reference Jacobians at its points (at most 8) */
 PETSC_EXTERN PetscErrorCode SPMeshCoordinateTabulation(DM, PetscQuadrature, PetscTabulation *);
+/* mesh.c: simplex cells, collective (PETSc's answer is per rank) */
+PETSC_EXTERN PetscErrorCode SPMeshIsSimplex(DM, PetscBool *);
 PETSC_EXTERN PetscErrorCode SPMeshCellJacobians(DM, Vec, PetscTabulation, PetscQuadrature, PetscInt, PetscReal[], PetscReal[]);
 
 /* One material: a law and its data, on the cells of one label value (region materials) or on

@@ -104,7 +104,7 @@ PetscErrorCode SPMeshCheckSize(MPI_Comm comm, DM dm)
   PetscCall(CheckScale(comm));
   if (dm) {
     PetscCall(DMGetDimension(dm, &dim));
-    PetscCall(DMPlexIsSimplex(dm, &simplex));
+    PetscCall(SPMeshIsSimplex(dm, &simplex));
     PetscCall(DMPlexGetHeightStratum(dm, 0, &cStart, &cEnd));
     cells = (PetscReal)(cEnd - cStart);
     PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &cells, 1, MPIU_REAL, MPIU_SUM, comm));

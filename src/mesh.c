@@ -215,6 +215,27 @@ PetscErrorCode SPMeshGetSerialNumbers(DM dm, const PetscInt **sid)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Whether the mesh's cells are simplices, the same answer on every rank: PETSc's DMPlexIsSimplex
+   looks at this rank's first cell and says "tensor" on a rank with none, so a rank left without
+   cells built a Q1 field beside the others' P1 and the ranks' PETSc objects no longer matched
+   (a two-cell mesh on two ranks hung in the restart writer's first exchange) */
+PetscErrorCode SPMeshIsSimplex(DM dm, PetscBool *simplex)
+{
+  PetscInt cStart, cEnd;
+  int      mine = 0, any;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMPlexGetHeightStratum(dm, 0, &cStart, &cEnd));
+  if (cEnd > cStart) {
+    PetscBool s;
+    PetscCall(DMPlexIsSimplex(dm, &s));
+    mine = s ? 1 : 0;
+  }
+  PetscCallMPI(MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, PetscObjectComm((PetscObject)dm)));
+  *simplex = any ? PETSC_TRUE : PETSC_FALSE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* detJ of a dim x dim Jacobian J_ik = dx_i/dxi_k and its scale-free shape detJ / prod_k |J e_k|
    (1 for a square, 0 for a flat cell) */
 static void JacobianShape(PetscInt dim, const PetscReal J[], PetscReal *detJ, PetscReal *shape)

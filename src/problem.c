@@ -374,7 +374,7 @@ PetscErrorCode SPProblemSetUp(SPProblem p)
   const SPMaterialLaw *law                 = p->mat[0].law; /* every material's (checked) */
 
   PetscFunctionBeginUser;
-  PetscCall(DMPlexIsSimplex(p->dm, &simplex));
+  PetscCall(SPMeshIsSimplex(p->dm, &simplex));
   /* PETSc's own default degree is 0; spcontact's is 1 (P1/Q1), -petscspace_degree overrides */
   PetscCall(SPOptionsSetDefault("-petscspace_degree", "1"));
   PetscCall(PetscFECreateDefault(comm, p->dim, p->dim, simplex, NULL, PETSC_DETERMINE, &fe));

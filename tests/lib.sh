@@ -5,11 +5,12 @@ SPC=${SPC:-bin/spcontact}
 TESTOUT=${TESTOUT:-build/tests}
 
 # spc OUT NP ARGS... : run spcontact on NP ranks, stdout+stderr to OUT; returns its exit code
+# (124 if it ran past SPC_TIMEOUT seconds, default 900: a hang fails the case, it does not stop the run)
 spc() {
   local out=$1 np=$2; shift 2
   local cmd="$MPIEXEC -n $np $SPC $*"
   RERUN="${RERUN:+$RERUN ; }$cmd"
-  timeout 900 $MPIEXEC -n "$np" $SPC "$@" >"$out" 2>&1
+  timeout "${SPC_TIMEOUT:-900}" $MPIEXEC -n "$np" $SPC "$@" >"$out" 2>&1
 }
 
 # sval OUT KEY : the value of KEY in the summary block of OUT

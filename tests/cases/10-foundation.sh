@@ -267,6 +267,31 @@ test_foundation_parallel_invariance() {
   return $rc
 }
 
+# A rank without cells on a simplex mesh: METIS puts both triangles of a unit square on rank 1
+# of 2. PETSc's simplex test is per rank (a rank with no cell says "tensor"), so rank 0 built a Q1
+# field beside rank 1's P1, their PETSc objects stopped matching, and the run hung after step 1
+# in the restart writer. Square [0,1]^2 on the rigid plane y = 0, u_x = 0 on both sides, pressure
+# q on the top: uniaxial strain, exact in P1, |u|max = q (1+nu)(1-2nu)/((1-nu) E), contact force q.
+test_foundation_empty_rank_simplex() {
+  fnd_setup
+  local rc=0 q=0.01 nu=0.3 ref
+  printf '%s\n' '$MeshFormat' '2.2 0 8' '$EndMeshFormat' '$Nodes' 4 '1 0 0 0' '2 1 0 0' '3 1 1 0' '4 0 1 0' \
+    '$EndNodes' '$Elements' 6 '1 1 2 1 1 1 2' '2 1 2 2 2 3 4' '3 1 2 3 3 4 1' '4 1 2 3 3 2 3' \
+    '5 2 2 10 1 1 2 3' '6 2 2 10 1 1 3 4' '$EndElements' >"$CASE_DIR/square2.msh"
+  local A="-mesh_file $CASE_DIR/square2.msh -material_nu $nu -bc_0_type dirichlet -bc_0_values 3 -bc_0_components 0 -bc_1_type pressure -bc_1_values 2 -bc_1_value $q -contact_values 1 -contact_obstacle_0_type plane -contact_obstacle_0_point 0,0 -contact_obstacle_0_normal 0,1 -output_dir $CASE_DIR"
+  ref=$(awk -v q=$q -v nu=$nu 'BEGIN{printf "%.12e", q * (1 + nu) * (1 - 2 * nu) / (1 - nu)}')
+  local runs=("np1:1:" "np2:2:" "np3:3:-mesh_partitioner simple")
+  for r in "${runs[@]}"; do
+    local name=${r%%:*} rest=${r#*:}; local np=${rest%%:*} extra=${rest#*:} out="$CASE_DIR/$name.out"
+    # shellcheck disable=SC2086
+    SPC_TIMEOUT=60 spc "$out" "$np" $A $extra -output_name "sq2_$name"
+    assert_eq "$name ($np ranks $extra) exit code (124: hung)" "$?" 0 || { tail -n 3 "$out"; rc=1; continue; }
+    assert_close "$name displacement_max" "$(sval "$out" displacement_max)" "$ref" 1e-8 || rc=1
+    assert_close "$name contact_force_y" "$(sval "$out" contact_force_y)" $q 1e-8 || rc=1
+  done
+  return $rc
+}
+
 # --- HDF5/XDMF/CSV output of a multi-step parallel run ---
 # fnd_output_check NAME NSTEPS : .xmf consistent with .h5, no *.part left, CSV header + rows per step
 fnd_output_check() {
