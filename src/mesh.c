@@ -461,15 +461,33 @@ PetscErrorCode SPMeshPointVertices(DM dm, PetscInt c, PetscInt vStart, PetscInt 
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* PETSc's -dm_plex_filename names the mesh as -mesh_file does and is read the same way, through
+   the file checks (DMSetFromOptions read it behind them: a truncated file ended in PETSc's error
+   wall, and the box's default -dm_plex_simplex 0 met a triangle mesh) */
+static PetscErrorCode MeshFileAlias(MPI_Comm comm, char file[], size_t len)
+{
+  char      alias[PETSC_MAX_PATH_LEN];
+  PetscBool set;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsGetString(NULL, NULL, "-dm_plex_filename", alias, sizeof(alias), &set));
+  if (!set) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCheck(!file[0] || !strcmp(file, alias), comm, PETSC_ERR_USER_INPUT, "-mesh_file %s and -dm_plex_filename %s name two meshes; give one of them (-mesh_file)", file, alias);
+  PetscCall(PetscStrncpy(file, alias, len));
+  PetscCall(PetscOptionsClearValue(NULL, "-dm_plex_filename"));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode SPMeshCreate(MPI_Comm comm, DM *dm)
 {
   char file[PETSC_MAX_PATH_LEN] = "", partitioner[64] = "metis";
 
   PetscFunctionBeginUser;
   PetscOptionsBegin(comm, NULL, "Mesh options", "spcontact");
-  PetscCall(PetscOptionsString("-mesh_file", "gmsh .msh file; without it a PETSc box mesh is built from -dm_plex_box_* options", "SPMeshCreate", file, file, sizeof(file), NULL));
+  PetscCall(PetscOptionsString("-mesh_file", "gmsh .msh file (PETSc's -dm_plex_filename is taken as this); without it a PETSc box mesh is built from -dm_plex_box_* options", "SPMeshCreate", file, file, sizeof(file), NULL));
   PetscCall(PetscOptionsString("-mesh_partitioner", "Partitioner: metis (METIS 5 k-way, default), ptscotch, simple", "SPMeshCreate", partitioner, partitioner, sizeof(partitioner), NULL));
   PetscOptionsEnd();
+  PetscCall(MeshFileAlias(comm, file, sizeof(file)));
   for (char *c = partitioner; *c; ++c) *c = (char)tolower((unsigned char)*c); /* any case, as PETSc's lists */
   if (file[0]) {
     PetscCall(ReadMesh(comm, file, dm));

@@ -112,6 +112,8 @@ mesh file missing|input/hertz2d.opts|-mesh_file /nonexistent/mesh.msh
 mesh file not a mesh|input/hertz2d.opts|-mesh_file input/hertz2d.opts
 gmsh format 3 (unsupported) named|input/hertz2d.opts|-mesh_file @DIR@/v3.msh
 truncated gmsh file|input/hertz2d.opts|-mesh_file @DIR@/truncated.msh
+truncated gmsh file named by PETSc's -dm_plex_filename (was: PETSc error wall)|input/elastic2d.opts|-dm_plex_filename @DIR@/truncated.msh
+-dm_plex_filename beside -mesh_file, another file|input/hertz2d.opts|-dm_plex_filename @DIR@/truncated.msh
 options file missing|input/hertz2d.opts|-options_file /nonexistent.opts
 options file naming a missing options file|input/hertz2d.opts|-options_file @DIR@/outer.opts
 the same two files deep|input/hertz2d.opts|-options_file @DIR@/middle.opts
