@@ -109,6 +109,7 @@ struct _n_SPProblem {
 PETSC_EXTERN PetscErrorCode SPBCSetFromOptions(MPI_Comm, PetscInt, PetscInt *, SPBC[]);
 PETSC_EXTERN PetscErrorCode SPBCAddToDS(DM, PetscInt, SPBC[], PetscScalar[]);
 PETSC_EXTERN PetscErrorCode SPBCCheckBalance(DM, SPProblem, SPContact); /* bc-balance.c: loads the supports cannot hold, refused */
+PETSC_EXTERN PetscErrorCode SPBCCheckAbsorbed(DM, SPProblem); /* bc-absorbed.c: a load component only a support feels, refused */
 PETSC_EXTERN PetscErrorCode SPBCFreeRotation(DM, SPContact, PetscInt *, PetscReal[3], PetscReal[3]); /* bc-rotation.c: a rigid rotation the supports leave free */
 #define SP_RIGID_MAX 6 /* rigid modes in 3D: 3 translations, 3 rotations */
 PETSC_EXTERN PetscErrorCode SPBCRigidSupports(DM, SPContact, PetscBool, const PetscInt[], PetscInt, const PetscReal[][3], const PetscReal[], PetscReal[][SP_RIGID_MAX][SP_RIGID_MAX]); /* bc-rotation.c: the supports' rows per group of vertices */

@@ -63,6 +63,7 @@ static PetscErrorCode CheckCombination(SPApp a)
   PetscCheck(!(contact && a->problem->mmsAmp != 0.0), a->comm, PETSC_ERR_USER_INPUT, "-material_mms: the manufactured solution is a contact-free verification (its exact solution ignores contact); drop -material_mms or the contact options");
   PetscCall(PetscOptionsHasHelp(NULL, &help));
   if (!help) PetscCall(SPBCCheckBodies(a->dm, a->contact)); /* each body (or group linked by pairs) held on its own */
+  if (!help) PetscCall(SPBCCheckAbsorbed(a->dm, a->problem)); /* a load on held dofs only */
   if (!help) PetscCall(SPBCCheckBalance(a->dm, a->problem, a->contact)); /* -help alone sets up a box with no condition */
   PetscFunctionReturn(PETSC_SUCCESS);
 }

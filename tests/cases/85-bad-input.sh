@@ -364,6 +364,39 @@ CASES
   return $rc
 }
 
+# A load component that only a support feels: refused with one line naming the condition and
+# the component, on 1, 2 and 3 ranks, in 2D and 3D, Q1 and Q2 (a traction along x on B2's symmetry
+# edge, which -bc_0 holds in x, left the solution unchanged to the last digit). The part along a
+# free component still acts: a shear along the roller moves the body.
+test_bad_input_load_on_held() {
+  local rc=0 i=0 np file args comp code
+  while IFS='|' read -r np file comp args; do
+    i=$((i + 1))
+    # shellcheck disable=SC2086
+    spc "$CASE_DIR/o$i.txt" "$np" -options_file "$file" -output_dir "$CASE_DIR" $args </dev/null; code=$? # mpiexec would read the cases
+    echo "$np ranks, $file $args: exit $code: $(grep '^spcontact: error:' "$CASE_DIR/o$i.txt")"
+    assert_eq "exit code" "$code" 1 || rc=1
+    assert_eq "one error line" "$(grep -c '^spcontact: error:' "$CASE_DIR/o$i.txt")" 1 || rc=1
+    grep -qF "its $comp component acts only where a Dirichlet condition fixes $comp" "$CASE_DIR/o$i.txt" || { echo "line does not name component $comp FAILED"; rc=1; }
+  done <<'CASES'
+1|input/hertz2d.opts|x|-bc_2_type traction -bc_2_values 1 -bc_2_value 0.001,0
+2|input/hertz2d.opts|x|-bc_2_type pressure -bc_2_values 1 -bc_2_value 0.001
+3|input/hertz2d.opts|x|-bc_2_type force -bc_2_values 1 -bc_2_value 0.001,0
+2|input/block3d.opts|x|-bc_3_type traction -bc_3_values 6 -bc_3_value 0.001,0.002,0
+1|input/elastic3d.opts|x|-dm_plex_box_faces 2,2,2 -petscspace_degree 2 -bc_5_type traction -bc_5_values 6 -bc_5_value 1,0,0
+CASES
+  # the exact line once
+  assert_eq "line" "$(grep '^spcontact: error:' "$CASE_DIR/o1.txt")" "spcontact: error: -bc_2_type traction: its x component acts only where a Dirichlet condition fixes x (on every facet of -bc_2_values): the support takes it and the body never feels it. Drop that part of the load, or the Dirichlet condition on x there" || rc=1
+  # along the roller: the shear acts (B2 moves: 2.5059e-2 against 2.6195e-2 without it), the same on 2 ranks
+  for np in 1 2; do
+    spc "$CASE_DIR/roller$np.txt" $np -options_file input/hertz2d.opts -load_steps 1 -bc_2_type traction -bc_2_values 1 -bc_2_value 0,0.001 -output_dir "$CASE_DIR" -output_name roller$np || { echo "roller $np ranks: exit $?"; rc=1; }
+  done
+  assert_eq "shear along the roller converges" "$(sval "$CASE_DIR/roller1.txt" converged)" yes || rc=1
+  assert_close "contact force y with the roller shear: 0.005 - 0.001 x (edge length 1)" "$(sval "$CASE_DIR/roller1.txt" contact_force_y)" 0.004 1e-8 || rc=1
+  same_summary "$CASE_DIR/roller1.txt" "$CASE_DIR/roller2.txt" 1e-8 displacement_max contact_force_y || rc=1
+  return $rc
+}
+
 # A misspelt option is reported (one warning line per unused option) and the run is otherwise
 # the default one; -options_left false silences the report
 # The load-balance refusal on 1, 2 and 3 ranks (each rank sums the facets it owns): the same line;
