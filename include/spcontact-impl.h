@@ -212,6 +212,7 @@ typedef struct {
   PetscReal     creep[3];      /* slip accumulated while stuck (reset when the point slips or opens) */
   PetscReal     tCommit[3];    /* tangential traction at the last converged step (vector) */
   SPPointStatus status;        /* open / stick / slip (frictionless: open or stick = closed) */
+  PetscBool     noFriction;    /* closed at the last bookkeeping with no friction there (mu 0, or fresh) */
   PetscBool     active;        /* g + sN <= 0 at the last bookkeeping */
   PetscBool     heldStick;     /* stuck before this boundary's update (its branch held with `held`) */
   PetscBool     held;          /* active before this boundary's shift update: its linear branch is held (branchHold) */
@@ -409,6 +410,8 @@ PETSC_EXTERN void           SPFrictionStepStart(SPContact);
 PETSC_EXTERN PetscReal      SPFrictionStepLimit(SPContact);
 PETSC_EXTERN PetscErrorCode SPFrictionBookkeep(SPContact, PetscBool);
 PETSC_EXTERN PetscBool      SPFrictionConverged(SPContact);
+PETSC_EXTERN PetscInt       SPFrictionOutputStatus(SPContact, PetscInt);
+PETSC_EXTERN PetscErrorCode SPFrictionWarnFresh(SPContact, PetscInt);
 PETSC_EXTERN PetscErrorCode SPFrictionReleaseFrozen(SPContact, PetscBool *, PetscBool *);
 PETSC_EXTERN PetscErrorCode SPFrictionSettled(SPContact, PetscBool *);
 PETSC_EXTERN PetscErrorCode SPFrictionJumped(SPContact, PetscReal, PetscBool *);

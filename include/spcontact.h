@@ -78,6 +78,7 @@ typedef struct {
   PetscReal forceMaster[3]; /* contact pairs: force on the master vertices of the user pairs' elements */
   PetscInt  remoteElements; /* contact pairs: elements whose master facet is owned by another rank */
   PetscInt  stickPoints, slipPoints, statusChanged; /* friction: return-map status, changes since the last iterate */
+  PetscInt  freshPoints;   /* friction: closed points carrying none because they were open when the step began */
   PetscReal maxStickCreep;  /* friction: max |Dg_T| over stick points in the current step */
   PetscReal maxSlipShiftResidual; /* friction: max over slip points of eps_T |s_T' - s_T| / (mu p), s_T' one more update at the state of the last one */
   PetscReal tangentialForce[3]; /* friction: resultant tangential force on the slave bodies */

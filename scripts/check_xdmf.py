@@ -23,7 +23,7 @@ Checks, one output line each ("ok   ..." or "FAIL ..."):
     /vertex_fields/{tangential_traction,slip,status}_Field_0 (spcontact runs with friction), each
     dataset has one slab per step with one row per geometry point, shape (steps, points, dim) for
     the vectors tangential_traction and slip and (steps, points) for status; every grid lists them
-    (Vector, Vector, Scalar) with grid k selecting slab k; status values are in {-1, 0, 1, 2}
+    (Vector, Vector, Scalar) with grid k selecting slab k; status values are in {-1, 0, 1, 2, 3}
     (-1: not a contact point, 0 open, 1 stick, 2 slip).
 Exit status 0 when every check passes, 1 on any failure (including a missing or unparsable file).
 """
@@ -277,8 +277,8 @@ class Checker:
             if name == "status" and shape == expect:
                 import numpy as np
                 v = f[dpath][()]
-                ok = bool(np.all(np.isin(v, (-1.0, 0.0, 1.0, 2.0))))
-                self.report(ok, "%s: status values %s in {-1, 0, 1, 2}" % (where, sorted(set(np.unique(v).tolist()))[:8]))
+                ok = bool(np.all(np.isin(v, (-1.0, 0.0, 1.0, 2.0, 3.0))))
+                self.report(ok, "%s: status values %s in {-1, 0, 1, 2, 3}" % (where, sorted(set(np.unique(v).tolist()))[:8]))
 
     def run(self):
         try:

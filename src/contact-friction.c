@@ -569,7 +569,7 @@ static PetscReal FrozenDeviation(SPContact c, PetscInt i, const PetscReal t[])
 PetscErrorCode SPFrictionBookkeep(SPContact c, PetscBool compare)
 {
   const PetscInt dim = c->dim;
-  PetscInt       n[4] = {0, 0, 0, 0}, nall[4];
+  PetscInt       n[5] = {0, 0, 0, 0, 0}, nall[5];
   PetscReal      r[3] = {0, 0, 0}, rall[3];
 
   PetscFunctionBeginUser;
@@ -599,7 +599,9 @@ PetscErrorCode SPFrictionBookkeep(SPContact c, PetscBool compare)
       pt->st.dir[0] = m[0], pt->st.dir[1] = m[1];
       if (pt->st.flips > c->maxFlips) n[3]++, pt->frozenDev = FrozenDeviation(c, i, t), r[2] = PetscMax(r[2], pt->frozenDev);
     }
-    pt->st.status = st;
+    pt->st.status     = st;
+    pt->st.noFriction = st != SP_POINT_OPEN && pt->geo.mu <= 0.0 ? PETSC_TRUE : PETSC_FALSE;
+    if (st != SP_POINT_OPEN && pt->st.fresh && c->friction) n[4]++;
     if (pt->geo.mu <= 0.0 || st == SP_POINT_OPEN) continue;
     n[st == SP_POINT_STICK ? 0 : 1]++;
     if (st != SP_POINT_STICK) continue;
@@ -607,15 +609,40 @@ PetscErrorCode SPFrictionBookkeep(SPContact c, PetscBool compare)
     r[0]  = PetscMax(r[0], creep / pt->h);
     r[1]  = PetscMax(r[1], creep);
   }
-  PetscCallMPI(MPI_Allreduce(n, nall, 4, MPIU_INT, MPI_SUM, PetscObjectComm((PetscObject)c->dm)));
+  PetscCallMPI(MPI_Allreduce(n, nall, 5, MPIU_INT, MPI_SUM, PetscObjectComm((PetscObject)c->dm)));
   PetscCallMPI(MPI_Allreduce(r, rall, 3, MPIU_REAL, MPI_MAX, PetscObjectComm((PetscObject)c->dm)));
   c->stats.frozenPoints    = nall[3];
   c->stats.frozenDeviation = rall[2];
   c->stats.stickPoints   = nall[0];
   c->stats.slipPoints    = nall[1];
+  c->stats.freshPoints   = nall[4];
   c->stats.statusChanged = compare ? nall[2] : 0;
   c->stats.maxStickCreep = rall[1];
   c->creepRel            = rall[0];
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The status written for point i (h5 `status`, `_contact.csv`): 0 open, 1 stick, 2 slip, 3 closed
+   but carrying no friction (its obstacle's or pair's mu is 0, or it was open when the step began:
+   the fresh-point rule); with no friction anywhere a closed point is 1, as before friction */
+PetscInt SPFrictionOutputStatus(SPContact c, PetscInt i)
+{
+  const SPContactPoint *pt = &c->pt[i];
+
+  if (pt->st.status == SP_POINT_STICK && c->friction && pt->st.noFriction) return 3;
+  return (PetscInt)pt->st.status;
+}
+
+/* Collective, after the run's last converged step (its figures are the summary's): a warning if
+   most closed points carried no friction because they were open when the step began (friction
+   in one load step was frictionless without a word) */
+PetscErrorCode SPFrictionWarnFresh(SPContact c, PetscInt step)
+{
+  const SPContactStats *st = &c->stats;
+
+  PetscFunctionBeginUser;
+  if (!c->enabled || !c->friction || st->freshPoints <= st->stickPoints + st->slipPoints) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(PetscFPrintf(PetscObjectComm((PetscObject)c->dm), PETSC_STDERR, "spcontact: warning: load step %" PetscInt_FMT ": %" PetscInt_FMT " of its %" PetscInt_FMT " closed contact points carried no friction, since they were open when the step began (a point's friction starts at the step after it closes: status 3 in the output); give more load steps (-load_steps), or a first step with the normal load alone (-bc_<i>_ramp), so that contact closes before the tangential load comes\n", step, st->freshPoints, st->freshPoints + st->stickPoints + st->slipPoints));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -375,7 +375,7 @@ PetscErrorCode SPContactGetFields(SPContact c, Vec X, Vec pressure, Vec gap, Vec
 
 /* Friction vertex fields for output, at the state X: tangential traction sum_a t_a T_a and the
    accumulated slip (vectors, on the vertex DM of `traction`, dim dofs), and the status (0 open,
-   1 stick, 2 slip) on the scalar vertex DM of `status`. Vertices that are not contact points get
+   1 stick, 2 slip, 3 closed without friction: SPFrictionOutputStatus) on the scalar vertex DM of `status`. Vertices that are not contact points get
    zero traction and slip and status -1. */
 PetscErrorCode SPContactGetFrictionFields(SPContact c, Vec X, Vec traction, Vec slip, Vec status)
 {
@@ -410,7 +410,7 @@ PetscErrorCode SPContactGetFrictionFields(SPContact c, Vec X, Vec traction, Vec 
       t[offV + d] = pt->ft[d];
       s[offV + d] = pt->st.slip[d];
     }
-    st[offS] = (PetscReal)pt->st.status;
+    st[offS] = (PetscReal)SPFrictionOutputStatus(c, i);
   }
   PetscCall(VecRestoreArray(traction, &t));
   PetscCall(VecRestoreArray(slip, &s));
@@ -419,7 +419,7 @@ PetscErrorCode SPContactGetFrictionFields(SPContact c, Vec X, Vec traction, Vec 
 }
 
 /* Every contact point on rank 0 as CSV: reference coordinates, area, eps, gap, shift, pressure,
-   active; tangential traction (vector), accumulated slip (vector), status (0 open, 1 stick, 2 slip) */
+   active; tangential traction (vector), accumulated slip (vector), status (SPFrictionOutputStatus) */
 PetscErrorCode SPContactWritePoints(SPContact c, Vec X, const char file[])
 {
   MPI_Comm     comm = PetscObjectComm((PetscObject)c->dm);
@@ -445,7 +445,7 @@ PetscErrorCode SPContactWritePoints(SPContact c, Vec X, const char file[])
     r[8] = SPContactPointActive(c, i); /* at X, as the summary counts it (st.active is booked at iteration boundaries only) */
     for (PetscInt d = 0; d < c->dim; ++d) r[9 + d] = pt->ft[d];
     for (PetscInt d = 0; d < c->dim; ++d) r[12 + d] = pt->st.slip[d];
-    r[15] = pt->st.status;
+    r[15] = SPFrictionOutputStatus(c, i);
   }
   if (rank == 0) PetscCall(PetscMalloc2(size, &counts, size + 1, &displs));
   PetscCallMPI(MPI_Gather(&mine, 1, MPI_INT, counts, 1, MPI_INT, 0, comm));
@@ -561,6 +561,7 @@ PetscErrorCode SPContactView(SPContact c, PetscViewer v)
   PetscCall(PetscViewerASCIIPrintf(v, "contact_friction_mu %g\ncontact_friction %s\n", (double)c->mu, c->friction ? "yes" : "no"));
   if (c->friction) {
     PetscCall(PetscViewerASCIIPrintf(v, "contact_friction_alpha %g\ncontact_stick_points %" PetscInt_FMT "\ncontact_slip_points %" PetscInt_FMT "\n", (double)c->alphaT, st.stickPoints, st.slipPoints));
+    PetscCall(PetscViewerASCIIPrintf(v, "contact_fresh_points %" PetscInt_FMT "\n", st.freshPoints)); /* closed in the last step: no friction yet */
     PetscCall(PetscViewerASCIIPrintf(v, "contact_max_stick_creep %.10e\ncontact_friction_stick_hold %s\n", (double)st.maxStickCreep, c->stickHold && c->method->timing == SP_UPDATE_NEWTON ? "yes" : "no")); /* in effect: shifted only */
     PetscCall(PetscViewerASCIIPrintf(v, "contact_friction_jump_waits %" PetscInt_FMT "\n", c->jumpWaits));
     PetscCall(PetscViewerASCIIPrintf(v, "contact_tangential_force_x %.12e\ncontact_tangential_force_y %.12e\ncontact_tangential_force_z %.12e\n", (double)st.tangentialForce[0], (double)st.tangentialForce[1], (double)st.tangentialForce[2]));

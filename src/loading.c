@@ -201,6 +201,7 @@ PetscErrorCode SPLoadingRun(SPApp app)
   }
   app->stepsDone   = step;
   app->loadReached = done;
+  if (step > step0) PetscCall(SPFrictionWarnFresh(app->contact, step));
   PetscCall(SPProblemSetLoadFactor(app->problem, done));
   PetscCall(VecDestroy(&ubackup));
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -1,6 +1,6 @@
 /* Output: one HDF5 file per run (mesh once, then per load step the vertex fields displacement
    and, with contact, contact_pressure, gap, shift, active; with friction (any obstacle or pair
-   with mu > 0) also tangential_traction and slip (vectors) and status (0 open, 1 stick, 2 slip,
+   with mu > 0) also tangential_traction and slip (vectors) and status (0 open, 1 stick, 2 slip, 3 closed without friction,
    -1 on vertices that are not contact points)), an XDMF file beside it for ParaView,
    and the CSV Newton history. Files are written as *.part and renamed only when the run completes,
    so a failed or interrupted run never leaves a file that looks complete; the h5's root attribute

@@ -76,3 +76,42 @@ test_friction_output_hdf5() {
   assert_eq "check_xdmf.py mu0.xmf exit code" "$?" 0 || rc=1
   return $rc
 }
+
+# The written status agrees with the summary's counts: 1 stick, 2 slip, 3 closed without friction
+# (contact_fresh_points: closed in the last step, which the fresh-point rule leaves frictionless).
+# B2 with friction in one load step: 27 of the 28 closed points closed in it (one touched at the
+# start), so the run is frictionless but for one point; the CSV used to write 1 (stick) for all 28
+# beside contact_stick_points 1, without a word; now status 3 and one warning line. In 4 steps the
+# contact grows by 3 points in the last one: no warning, the counts agree. 1 and 2 ranks.
+fo_status_counts() { # OUT CSV: the summary's stick / slip / fresh against the CSV's statuses 1 / 2 / 3
+  local out=$1 csv=$2 rc=0 k s
+  for k in 1:stick 2:slip 3:fresh; do
+    s=${k%%:*}
+    assert_eq "${k#*:} points: CSV status $s count = contact_${k#*:}_points" \
+      "$(awk -F, -v s="$s" 'NR > 1 && $16 == s {n++} END {print n + 0}' "$csv")" "$(sval "$out" "contact_${k#*:}_points")" || rc=1
+  done
+  assert_eq "active = stick + slip + fresh" "$(sval "$out" contact_active_points)" \
+    "$(($(sval "$out" contact_stick_points) + $(sval "$out" contact_slip_points) + $(sval "$out" contact_fresh_points)))" || rc=1
+  return $rc
+}
+
+test_friction_output_fresh_points() {
+  local rc=0 np out
+  for np in 1 2; do
+    out="$CASE_DIR/one$np.out"
+    spc "$out" $np -options_file input/hertz2d.opts -load_steps 1 -contact_friction_mu 0.3 -output_dir "$CASE_DIR" -output_name one$np ||
+      { echo "one step, $np ranks: spcontact exited with $?"; tail -n 5 "$out"; rc=1; continue; }
+    echo "one step, $np ranks: active $(sval "$out" contact_active_points) stick $(sval "$out" contact_stick_points) slip $(sval "$out" contact_slip_points) fresh $(sval "$out" contact_fresh_points)"
+    fo_status_counts "$out" "$CASE_DIR/one${np}_contact.csv" || rc=1
+    assert_ge "one step: fresh points are most of the closed ones" "$(sval "$out" contact_fresh_points)" $(($(sval "$out" contact_active_points) / 2 + 1)) || rc=1
+    assert_eq "one step: one warning line" "$(grep -c '^spcontact: warning: load step 1: [0-9]* of its [0-9]* closed contact points carried no friction' "$out")" 1 || rc=1
+    out="$CASE_DIR/four$np.out"
+    spc "$out" $np -options_file input/hertz2d.opts -load_steps 4 -contact_friction_mu 0.3 -output_dir "$CASE_DIR" -output_name four$np ||
+      { echo "four steps, $np ranks: spcontact exited with $?"; tail -n 5 "$out"; rc=1; continue; }
+    echo "four steps, $np ranks: active $(sval "$out" contact_active_points) stick $(sval "$out" contact_stick_points) slip $(sval "$out" contact_slip_points) fresh $(sval "$out" contact_fresh_points)"
+    fo_status_counts "$out" "$CASE_DIR/four${np}_contact.csv" || rc=1
+    assert_eq "four steps: no warning" "$(grep -c '^spcontact: warning' "$out")" 0 || rc=1
+  done
+  same_summary "$CASE_DIR/four1.out" "$CASE_DIR/four2.out" 1e-8 contact_stick_points contact_slip_points contact_fresh_points contact_tangential_force_x || rc=1
+  return $rc
+}
