@@ -37,10 +37,43 @@ static PetscBool NodeRange(FILE *fp, int major, double r[6])
   return PETSC_TRUE;
 }
 
+/* The last element type of an ASCII gmsh file above first order (tri6, quad9, tet10, ...: gmsh
+   types other than 1-7 and 15; gmsh writes the cells last), 0 if none or not known. PETSc's reader makes such a mesh's
+   coordinates a higher-order field, and the facet geometry failed on it with "Edge has 0
+   coordinates != 4"; spcontact reads the corner nodes instead (ReadMesh). */
+static PetscBool FirstOrder(int type)
+{
+  return (type >= 1 && type <= 7) || type == 15 ? PETSC_TRUE : PETSC_FALSE;
+}
+
+static int HighOrderType(FILE *fp, int major)
+{
+  char line[4096];
+  long nb, n;
+  int  type, high = 0;
+
+  rewind(fp);
+  while (fgets(line, sizeof(line), fp) && strncmp(line, "$Elements", 9)) {}
+  if (feof(fp) || !fgets(line, sizeof(line), fp) || sscanf(line, "%ld", &nb) != 1) return 0;
+  if (major != 4) { /* 2.2: one element per line, its type second */
+    while (fgets(line, sizeof(line), fp) && strncmp(line, "$EndElements", 12))
+      if (sscanf(line, "%*d %d", &type) == 1 && !FirstOrder(type)) high = type;
+    return high;
+  }
+  for (long b = 0; b < nb; ++b) { /* 4.x: blocks of one type each */
+    if (!fgets(line, sizeof(line), fp) || sscanf(line, "%*d %*d %d %ld", &type, &n) != 2) return high;
+    if (!FirstOrder(type)) high = type;
+    for (long k = 0; k < n; ++k)
+      if (!fgets(line, sizeof(line), fp)) return high;
+  }
+  return high;
+}
+
 /* A gmsh file must exist and start with $MeshFormat; checked on rank 0 before PETSc's reader
    runs, so a bad file is a clear, collective error instead of a parse failure deep inside.
-   range: its nodes' coordinate range (NodeRange; min > max if not known) */
-static PetscErrorCode CheckMeshFile(MPI_Comm comm, const char file[], double range[6])
+   range: its nodes' coordinate range (NodeRange; min > max if not known); *high: its first element
+   type above first order (0: none) */
+static PetscErrorCode CheckMeshFile(MPI_Comm comm, const char file[], double range[6], int *high)
 {
   PetscMPIInt rank;
   int         status = 0, type = 1; /* 0 ok, 1 missing, 2 not gmsh, 3 unsupported version, 4 a directory; type 0: ASCII */
@@ -49,6 +82,7 @@ static PetscErrorCode CheckMeshFile(MPI_Comm comm, const char file[], double ran
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   for (int d = 0; d < 3; ++d) range[d] = 1.0, range[3 + d] = 0.0;
+  *high = 0;
   if (rank == 0) {
     FILE       *fp = fopen(file, "r");
     char        line[64] = "";
@@ -61,12 +95,14 @@ static PetscErrorCode CheckMeshFile(MPI_Comm comm, const char file[], double ran
       else if (strncmp(version, "2.2", 3) && strncmp(version, "4", 1)) status = 3; /* PETSc 3.18 reads 2.2 and 4.x */
       if (!status && type == 0 && !NodeRange(fp, version[0] == '4' ? 4 : 2, range))
         for (int d = 0; d < 3; ++d) range[d] = 1.0, range[3 + d] = 0.0;
+      if (!status && type == 0) *high = HighOrderType(fp, version[0] == '4' ? 4 : 2);
       fclose(fp);
     }
   }
   PetscCallMPI(MPI_Bcast(&status, 1, MPI_INT, 0, comm));
   PetscCallMPI(MPI_Bcast(version, sizeof(version), MPI_CHAR, 0, comm));
   PetscCallMPI(MPI_Bcast(range, 6, MPI_DOUBLE, 0, comm));
+  PetscCallMPI(MPI_Bcast(high, 1, MPI_INT, 0, comm));
   PetscCheck(status != 1, comm, PETSC_ERR_USER_INPUT, "-mesh_file %s: cannot open the file (check the path; run `make meshes` to build input/*.geo into build/mesh/)", file);
   PetscCheck(status != 4, comm, PETSC_ERR_USER_INPUT, "-mesh_file %s: a directory, not a mesh file; give the .msh file's path", file);
   { /* a geometry for the mesh, not the mesh (input/<case>.geo next to build/mesh/<case>.msh) */
@@ -106,14 +142,44 @@ static PetscErrorCode TryRead(MPI_Comm comm, const char file[], PetscBool interp
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Second-order gmsh elements are read by their corner nodes, as first-order cells: spcontact's
+   geometry (facet normals and areas, contact points, the fast operator) is first order, and
+   PETSc's higher-order coordinate field stopped the facet geometry with a PETSc message */
+static const char *TypeName(int type)
+{
+  switch (type) {
+  case 8: return "gmsh type 8, 3-node lines";
+  case 9: return "gmsh type 9, 6-node triangles";
+  case 10: return "gmsh type 10, 9-node quadrangles";
+  case 11: return "gmsh type 11, 10-node tetrahedra";
+  case 12: return "gmsh type 12, 27-node hexahedra";
+  case 16: return "gmsh type 16, 8-node quadrangles";
+  case 17: return "gmsh type 17, 20-node hexahedra";
+  default: return "a gmsh type above first order";
+  }
+}
+
+static PetscErrorCode CornerNodesOnly(MPI_Comm comm, const char file[], int high)
+{
+  PetscBool hi = PETSC_FALSE, set;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsGetBool(NULL, NULL, "-dm_plex_gmsh_highorder", &hi, &set));
+  PetscCheck(!(set && hi), comm, PETSC_ERR_USER_INPUT, "-dm_plex_gmsh_highorder true: spcontact's geometry is first order (P1/Q1 cells; contact points at vertices); leave the option out, and a second-order mesh is read by its corner nodes");
+  PetscCall(SPOptionsSetDefault("-dm_plex_gmsh_highorder", "false"));
+  if (high) PetscCall(PetscFPrintf(comm, PETSC_STDERR, "spcontact: warning: -mesh_file %s holds higher-order elements (%s): read by their corner nodes as first-order cells, so curved edges become straight and the other nodes are not used; mesh with Mesh.ElementOrder = 1 to silence this, and refine for the geometry\n", file, TypeName(high)));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscErrorCode ReadMesh(MPI_Comm comm, const char file[], DM *dm)
 {
   PetscMPIInt size, rank;
-  int         bad = 0;
+  int         bad = 0, high;
   double      range[6];
 
   PetscFunctionBeginUser;
-  PetscCall(CheckMeshFile(comm, file, range));
+  PetscCall(CheckMeshFile(comm, file, range, &high));
+  PetscCall(CornerNodesOnly(comm, file, high));
   PetscCallMPI(MPI_Comm_size(comm, &size));
   if (size == 1) { /* one process: nobody can be left waiting, so one read (B2: 17 ms saved) */
     PetscCall(TryRead(comm, file, PETSC_TRUE, dm, &bad));

@@ -114,6 +114,7 @@ gmsh format 3 (unsupported) named|input/hertz2d.opts|-mesh_file @DIR@/v3.msh
 truncated gmsh file|input/hertz2d.opts|-mesh_file @DIR@/truncated.msh
 truncated gmsh file named by PETSc's -dm_plex_filename (was: PETSc error wall)|input/elastic2d.opts|-dm_plex_filename @DIR@/truncated.msh
 -dm_plex_filename beside -mesh_file, another file|input/hertz2d.opts|-dm_plex_filename @DIR@/truncated.msh
+gmsh mesh read with a higher-order geometry (was: PETSc's 'Edge has 0 coordinates != 4')|input/hertz2d.opts|-dm_plex_gmsh_highorder true
 options file missing|input/hertz2d.opts|-options_file /nonexistent.opts
 options file naming a missing options file|input/hertz2d.opts|-options_file @DIR@/outer.opts
 the same two files deep|input/hertz2d.opts|-options_file @DIR@/middle.opts
