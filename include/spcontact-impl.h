@@ -112,8 +112,9 @@ PETSC_EXTERN PetscErrorCode SPBCCheckBalance(DM, SPProblem, SPContact); /* bc-ba
 PETSC_EXTERN PetscErrorCode SPBCCheckAbsorbed(DM, SPProblem); /* bc-absorbed.c: a load component only a support feels, refused */
 PETSC_EXTERN PetscErrorCode SPBCFreeRotation(DM, SPContact, PetscInt *, PetscReal[3], PetscReal[3]); /* bc-rotation.c: a rigid rotation the supports leave free */
 #define SP_RIGID_MAX 6 /* rigid modes in 3D: 3 translations, 3 rotations */
+PETSC_EXTERN void           SPBCRigidAddRow(PetscInt, const PetscReal[3], const PetscReal[3], PetscReal[][SP_RIGID_MAX]); /* bc-rotation.c: G += phi phi^T of one support */
 PETSC_EXTERN PetscErrorCode SPBCRigidSupports(DM, SPContact, PetscBool, const PetscInt[], PetscInt, const PetscReal[][3], const PetscReal[], PetscReal[][SP_RIGID_MAX][SP_RIGID_MAX]); /* bc-rotation.c: the supports' rows per group of vertices */
-PETSC_EXTERN PetscErrorCode SPBCRigidKernel(PetscInt, PetscReal[][SP_RIGID_MAX], const PetscReal[3], PetscReal, PetscBool *, PetscReal[3], PetscInt *, PetscReal[3], PetscReal[3]); /* bc-rotation.c: the rigid modes they leave free */
+PETSC_EXTERN PetscErrorCode SPBCRigidKernel(PetscInt, PetscReal[][SP_RIGID_MAX], const PetscReal[3], PetscReal, PetscReal, PetscBool *, PetscReal[3], PetscInt *, PetscReal[3], PetscReal[3]); /* bc-rotation.c: the rigid modes they leave free */
 PETSC_EXTERN PetscErrorCode SPBCCheckBodies(DM, SPContact); /* bc-bodies.c: a body (or bodies linked by pairs) that nothing holds, refused */
 PETSC_EXTERN PetscReal      SPBCAmplitude(const SPBC *, PetscReal); /* a condition's load curve at a load factor */
 PETSC_EXTERN void           SPBCSetLoad(PetscInt, const SPBC[], PetscReal, PetscScalar[]);

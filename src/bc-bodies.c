@@ -241,7 +241,7 @@ static PetscErrorCode Refuse(DM dm, SPContact c, PetscInt dim, const SPGroupInfo
   PetscFunctionBeginUser;
   for (PetscInt d = 0; d < dim; ++d) centre[d] = 0.5 * (info->lo[d] + info->hi[d]), size = PetscMax(size, info->hi[d] - info->lo[d]);
   for (PetscInt i = 0; i < SP_RIGID_MAX; ++i) rows += G[i][i];
-  PetscCall(SPBCRigidKernel(dim, G, centre, size, &trans, t, &nrot, axis, point));
+  PetscCall(SPBCRigidKernel(dim, G, centre, size, 0.0, &trans, t, &nrot, axis, point));
   Format(dim, info->lo, lo, sizeof(lo));
   Format(dim, info->hi, hi, sizeof(hi));
   if (group) PetscCall(PetscSNPrintf(what, sizeof(what), "the %d bodies that contact pairs link in the box %s..%s (%.0f cells)", (int)info->bodies, lo, hi, (double)info->cells));
@@ -263,6 +263,128 @@ static PetscErrorCode Refuse(DM dm, SPContact c, PetscInt dim, const SPGroupInfo
   else if (rows == 0.0) PetscCall(PetscSNPrintf(cause, sizeof(cause), "no Dirichlet condition acts on %s and there is no obstacle", it));
   else PetscCall(PetscSNPrintf(cause, sizeof(cause), "%s leave %s free to %s", sup, it, motion));
   SETERRQ(PetscObjectComm((PetscObject)dm), PETSC_ERR_USER_INPUT, "nothing holds %s%s: %s, and %s, so %s can move rigidly and the solution is not unique. Give %s a Dirichlet condition (-bc_<i>_values on %s faces), or a contact pair with a body that is held (check that -contact_pair_<k>_slave_values and _master_values name the facets where the two bodies meet)", what, many, cause, group ? "no contact pair links them to a held body" : Pairs(c) ? "no contact pair names its facets" : "there are no contact pairs", they, it, its);
+}
+
+/* A body's mode is held through its pairs only if G's eigenvalue exceeds this, in units of one
+   support at the scaled distance 1: a frictionless disc's normals all point through its centre
+   but for the facets' angles, which left its rotation an eigenvalue of 1e-3 (1e-5 of the largest,
+   B6 without the disc's symmetry condition; it stalled), where every held body of the inputs has
+   0.75 or more */
+#define SP_PAIR_HOLD_MIN 1e-2
+
+/* Collective: pair k's master body mb[k], the one body its master facets lie on (-1: several) */
+static PetscErrorCode MasterBodies(DM dm, SPContact c, const PetscInt vb[], PetscInt mb[])
+{
+  PetscInt vStart, vEnd, lo[2 * SP_MAX_PAIRS * 2], all[2 * SP_MAX_PAIRS * 2];
+
+  PetscFunctionBeginUser;
+  PetscCall(DMPlexGetDepthStratum(dm, 0, &vStart, &vEnd));
+  for (PetscInt k = 0; k < c->npair; ++k) {
+    const SPPair *pr = &c->pair[k];
+    PetscInt      n, *facets, vs[27], nvs;
+    lo[2 * k] = lo[2 * k + 1] = PETSC_MAX_INT; /* min body, -(max body) */
+    PetscCall(SPMeshGetLabelFacets(dm, pr->label, pr->nmaster, pr->master, &n, &facets));
+    for (PetscInt f = 0; f < n; ++f) {
+      PetscCall(ClosureVertices(dm, facets[f], vStart, vEnd, vs, &nvs));
+      for (PetscInt j = 0; j < nvs; ++j)
+        if (vb[vs[j]] >= 0) lo[2 * k] = PetscMin(lo[2 * k], vb[vs[j]]), lo[2 * k + 1] = PetscMin(lo[2 * k + 1], -vb[vs[j]]);
+    }
+    PetscCall(PetscFree(facets));
+  }
+  PetscCallMPI(MPI_Allreduce(lo, all, (PetscMPIInt)(2 * c->npair), MPIU_INT, MPI_MIN, PetscObjectComm((PetscObject)dm)));
+  for (PetscInt k = 0; k < c->npair; ++k) mb[k] = all[2 * k] == -all[2 * k + 1] ? all[2 * k] : -1;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* This rank's pair rows, each body holding the bodies it touches still: a pair's slave point
+   pushes along its normal (every direction with friction on the pair) at its position, on its own
+   body and on the pair's master body (G[b], positions scaled by the body's centre and size). A
+   two-pass mirror's point pushes on its own body only: on the master side it would stand for the
+   user pair's contact at a place that contact has a row of its own, with the other body's normal
+   (B6's block top, counted as touching the disc everywhere, held the disc's rotation, which
+   stalled) */
+static void AddPairRows(SPContact c, PetscInt dim, PetscInt vStart, const PetscInt vb[], const PetscInt mb[], const PetscReal centre[][3], const PetscReal size[], PetscReal G[][SP_RIGID_MAX][SP_RIGID_MAX])
+{
+  for (PetscInt i = 0; i < c->n; ++i) {
+    const SPContactPoint *pt = &c->pt[i];
+    for (PetscInt k = 0; k < c->npair; ++k) {
+      const PetscInt  body[2] = {vb[pt->vertex - vStart], c->pair[k].mirror ? -1 : mb[k]};
+      const PetscBool mu      = c->friction && c->pair[k].mu > 0.0 ? PETSC_TRUE : PETSC_FALSE;
+      if (!(pt->pairMask & (1 << k))) continue;
+      for (PetscInt s = 0; s < 2; ++s) {
+        PetscReal y[3] = {0, 0, 0};
+        if (body[s] < 0 || (s && body[1] == body[0])) continue;
+        for (PetscInt d = 0; d < dim; ++d) y[d] = (pt->X[d] - centre[body[s]][d]) / size[body[s]];
+        for (PetscInt r = 0; r < (mu ? dim : 1); ++r) {
+          PetscReal e[3] = {0, 0, 0};
+          if (mu) e[r] = 1.0;
+          SPBCRigidAddRow(dim, y, mu ? e : pt->nIn, G[body[s]]);
+        }
+      }
+    }
+  }
+}
+
+/* The one line for a body free against the bodies it touches */
+static PetscErrorCode RefuseRelative(DM dm, PetscInt dim, const SPGroupInfo *info, PetscReal G[][SP_RIGID_MAX], const PetscReal centre[3], PetscReal size)
+{
+  PetscReal t[3], axis[3], point[3];
+  PetscInt  nrot;
+  PetscBool trans;
+  char      lo[64], hi[64], motion[160], at[64], ax[64];
+
+  PetscFunctionBeginUser;
+  PetscCall(SPBCRigidKernel(dim, G, centre, size, SP_PAIR_HOLD_MIN, &trans, t, &nrot, axis, point));
+  Format(dim, info->lo, lo, sizeof(lo));
+  Format(dim, info->hi, hi, sizeof(hi));
+  Format(dim, trans ? t : point, at, sizeof(at));
+  Format(dim, axis, ax, sizeof(ax));
+  if (trans) PetscCall(PetscSNPrintf(motion, sizeof(motion), "move along %s", at));
+  else if (dim == 2) PetscCall(PetscSNPrintf(motion, sizeof(motion), "turn about the point %s", at));
+  else PetscCall(PetscSNPrintf(motion, sizeof(motion), "turn about the axis %s through %s", ax, at));
+  SETERRQ(PetscObjectComm((PetscObject)dm), PETSC_ERR_USER_INPUT, "nothing holds the body in the box %s..%s (%.0f cells) against the bodies it touches: its Dirichlet components and its contact pairs, which push along their normals only (frictionless), leave it free, or all but free, to %s even with those bodies held still (a disc on a frictionless pair turns about its centre), so the solution is not unique. Fix a component that this motion moves (-bc_<i>_values on its faces; friction does not hold it in the step where it first touches)", lo, hi, (double)info->cells, motion);
+}
+
+/* Collective: each body in a pair must be held with the bodies it touches held still (a pair holds
+   only along its normals: the group check above sees the linked bodies as one rigid whole, so a
+   disc whose only condition was on the block it rests on passed, and stalled) */
+static PetscErrorCode CheckRelative(DM dm, SPContact c, PetscInt dim, const PetscInt vb[], PetscInt nb, PetscBool planes)
+{
+  PetscInt     vStart, vEnd, *id, mb[2 * SP_MAX_PAIRS], first = -1;
+  SPGroupInfo *info;
+  PetscReal(*centre)[3], *size, (*G)[SP_RIGID_MAX][SP_RIGID_MAX], (*loc)[SP_RIGID_MAX][SP_RIGID_MAX], (*P)[SP_RIGID_MAX][SP_RIGID_MAX];
+
+  PetscFunctionBeginUser;
+  PetscCall(DMPlexGetDepthStratum(dm, 0, &vStart, &vEnd));
+  PetscCall(PetscMalloc4(nb, &info, nb, &centre, nb, &size, nb, &id));
+  PetscCall(PetscMalloc1(nb, &G));
+  PetscCall(PetscCalloc2(nb, &loc, nb, &P));
+  for (PetscInt b = 0; b < nb; ++b) id[b] = b;
+  PetscCall(GroupInfo(dm, c, vb, id, nb, nb, info));
+  for (PetscInt b = 0; b < nb; ++b) {
+    size[b] = 0.0;
+    for (PetscInt d = 0; d < 3; ++d) centre[b][d] = 0.5 * (info[b].lo[d] + info[b].hi[d]), size[b] = PetscMax(size[b], info[b].hi[d] - info[b].lo[d]);
+    if (size[b] <= 0.0) size[b] = 1.0;
+  }
+  PetscCall(MasterBodies(dm, c, vb, mb));
+  PetscCall(SPBCRigidSupports(dm, c, planes, vb, nb, centre, size, G));
+  AddPairRows(c, dim, vStart, vb, mb, centre, size, loc);
+  PetscCallMPI(MPI_Allreduce(&loc[0][0][0], &P[0][0][0], (PetscMPIInt)(nb * SP_RIGID_MAX * SP_RIGID_MAX), MPIU_REAL, MPI_SUM, PetscObjectComm((PetscObject)dm)));
+  for (PetscInt b = 0; b < nb; ++b) {
+    PetscReal Gc[SP_RIGID_MAX][SP_RIGID_MAX], t[3], axis[3], point[3];
+    PetscInt  nrot;
+    PetscBool trans;
+    if (info[b].touched > 0 && !planes) continue; /* an obstacle may hold it, in directions the solve finds */
+    for (PetscInt i = 0; i < SP_RIGID_MAX; ++i)
+      for (PetscInt j = 0; j < SP_RIGID_MAX; ++j) G[b][i][j] += P[b][i][j], Gc[i][j] = G[b][i][j];
+    PetscCall(SPBCRigidKernel(dim, Gc, centre[b], size[b], SP_PAIR_HOLD_MIN, &trans, t, &nrot, axis, point));
+    if ((trans || nrot) && (first < 0 || Before(dim, &info[b], &info[first]))) first = b;
+  }
+  if (first >= 0) PetscCall(RefuseRelative(dm, dim, &info[first], G[first], centre[first], size[first]));
+  PetscCall(PetscFree2(loc, P));
+  PetscCall(PetscFree(G));
+  PetscCall(PetscFree4(info, centre, size, id));
+  PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 /* Collective, after the contact set-up: one line if a body, or a group of bodies that contact pairs
@@ -291,7 +413,11 @@ PetscErrorCode SPBCCheckBodies(DM dm, SPContact c)
   for (PetscInt i = 0; i < nb; ++i) bg[i] = Find(parent, i) == i ? ng++ : -1;
   for (PetscInt i = 0; i < nb; ++i) bg[i] = bg[Find(parent, i)];
   for (PetscInt v = 0; v < nv; ++v) vg[v] = vb[v] >= 0 ? bg[vb[v]] : -1;
+  for (PetscInt k = 0; c && c->enabled && k < c->nob; ++k) /* reactions known only for frictionless planes */
+    if (c->ob[k].type != SP_OBSTACLE_PLANE) planes = PETSC_FALSE;
+  if (c && c->enabled && c->friction) planes = PETSC_FALSE;
   if (ng < 2) { /* one group: the whole assembly, which bc-balance.c checks with the loads */
+    if (Pairs(c)) PetscCall(CheckRelative(dm, c, dim, vb, nb, planes));
     PetscCall(PetscFree2(parent, bg));
     PetscCall(PetscFree2(vb, vg));
     PetscFunctionReturn(PETSC_SUCCESS);
@@ -303,9 +429,6 @@ PetscErrorCode SPBCCheckBodies(DM dm, SPContact c)
     for (PetscInt d = 0; d < 3; ++d) centre[g][d] = 0.5 * (info[g].lo[d] + info[g].hi[d]), size[g] = PetscMax(size[g], info[g].hi[d] - info[g].lo[d]);
     if (size[g] <= 0.0) size[g] = 1.0;
   }
-  for (PetscInt k = 0; c && c->enabled && k < c->nob; ++k) /* reactions known only for frictionless planes */
-    if (c->ob[k].type != SP_OBSTACLE_PLANE) planes = PETSC_FALSE;
-  if (c && c->enabled && c->friction) planes = PETSC_FALSE;
   PetscCall(SPBCRigidSupports(dm, c, planes, vg, ng, centre, size, G));
   for (PetscInt g = 0; g < ng; ++g) {
     PetscReal Gc[SP_RIGID_MAX][SP_RIGID_MAX], t[3], axis[3], point[3];
@@ -313,12 +436,13 @@ PetscErrorCode SPBCCheckBodies(DM dm, SPContact c)
     PetscBool trans;
     if (info[g].touched > 0 && !planes) continue; /* an obstacle may hold it, in directions the solve finds */
     PetscCall(PetscArraycpy(&Gc[0][0], &G[g][0][0], SP_RIGID_MAX * SP_RIGID_MAX));
-    PetscCall(SPBCRigidKernel(dim, Gc, centre[g], size[g], &trans, t, &nrot, axis, point));
+    PetscCall(SPBCRigidKernel(dim, Gc, centre[g], size[g], 0.0, &trans, t, &nrot, axis, point));
     if (!trans && !nrot) continue;
     nfree++;
     if (first < 0 || Before(dim, &info[g], &info[first])) first = g;
   }
   if (nfree) PetscCall(Refuse(dm, c, dim, &info[first], G[first], nfree));
+  if (Pairs(c)) PetscCall(CheckRelative(dm, c, dim, vb, nb, planes));
   PetscCall(PetscFree4(info, centre, size, G));
   PetscCall(PetscFree2(parent, bg));
   PetscCall(PetscFree2(vb, vg));

@@ -17,7 +17,7 @@
 #include <spcontact-impl.h>
 
 /* G += phi phi^T for the support of direction r (unit) at the scaled position y */
-static void AddRow(PetscInt dim, const PetscReal y[3], const PetscReal r[3], PetscReal G[][SP_RIGID_MAX])
+void SPBCRigidAddRow(PetscInt dim, const PetscReal y[3], const PetscReal r[3], PetscReal G[][SP_RIGID_MAX])
 {
   const PetscInt  m = dim * (dim + 1) / 2;
   const PetscReal rot[3] = {y[1] * r[2] - y[2] * r[1], y[2] * r[0] - y[0] * r[2], y[0] * r[1] - y[1] * r[0]};
@@ -69,7 +69,7 @@ static PetscErrorCode AddSupports(DM dm, SPContact c, PetscBool planes, PetscInt
       PetscReal e[3] = {0, 0, 0};
       if (cind[k] >= dim) continue;
       e[cind[k]] = 1.0;
-      AddRow(dim, y, e, G[g]);
+      SPBCRigidAddRow(dim, y, e, G[g]);
     }
   }
   PetscCall(VecRestoreArrayRead(coords, &x));
@@ -80,7 +80,7 @@ static PetscErrorCode AddSupports(DM dm, SPContact c, PetscBool planes, PetscInt
       PetscReal y[3] = {0, 0, 0}, n[3] = {0, 0, 0}, len = 0.0;
       for (PetscInt d = 0; d < dim; ++d) y[d] = (c->pt[i].X[d] - centre[g][d]) / size[g], len += c->ob[k].normal[d] * c->ob[k].normal[d];
       for (PetscInt d = 0; d < dim; ++d) n[d] = c->ob[k].normal[d] / PetscSqrtReal(len);
-      AddRow(dim, y, n, G[g]);
+      SPBCRigidAddRow(dim, y, n, G[g]);
     }
   }
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -158,8 +158,9 @@ static void ShownMode(PetscInt dim, PetscReal v[][SP_RIGID_MAX], const PetscInt 
 }
 
 /* A free rigid translation of G (rows of any group): *free, and its unit direction t (the
-   translations' block G_tt is singular exactly when every row is normal to some t) */
-static void FreeTranslation(PetscInt dim, PetscReal G[][SP_RIGID_MAX], PetscBool *free, PetscReal t[3])
+   translations' block G_tt is singular exactly when every row is normal to some t; or has an
+   eigenvalue at most `floor`) */
+static void FreeTranslation(PetscInt dim, PetscReal G[][SP_RIGID_MAX], PetscReal floor, PetscBool *free, PetscReal t[3])
 {
   PetscReal a[SP_RIGID_MAX][SP_RIGID_MAX], w[SP_RIGID_MAX], v[SP_RIGID_MAX][SP_RIGID_MAX], wmax = 0.0;
   PetscInt  lo = 0;
@@ -171,14 +172,16 @@ static void FreeTranslation(PetscInt dim, PetscReal G[][SP_RIGID_MAX], PetscBool
     wmax = PetscMax(wmax, w[i]);
     if (w[i] < w[lo]) lo = i;
   }
-  *free = w[lo] <= 1e-10 * wmax ? PETSC_TRUE : PETSC_FALSE;
+  *free = w[lo] <= PetscMax(1e-10 * wmax, floor) ? PETSC_TRUE : PETSC_FALSE;
   for (PetscInt d = 0; d < 3; ++d) t[d] = d < dim && PetscAbsReal(v[d][lo]) > 1e-10 ? v[d][lo] : 0.0;
 }
 
 /* The rigid modes G (a group's rows, positions scaled by centre and size) leaves free: *ntrans > 0
    with a free translation (its direction t), else *nfree the free rotations and one of them: its
-   axis (3D; (0, 0, 1) in 2D) through point (in the mesh's units) */
-PetscErrorCode SPBCRigidKernel(PetscInt cdim, PetscReal G[][SP_RIGID_MAX], const PetscReal centre[3], PetscReal size, PetscBool *trans, PetscReal t[3], PetscInt *nfree, PetscReal axis[3], PetscReal point[3])
+   axis (3D; (0, 0, 1) in 2D) through point (in the mesh's units). Free: an eigenvalue of G at most
+   1e-10 of its largest (singular in floating point) or at most `floor` (in units of one support
+   at the scaled distance 1: nearly free, 0 for none) */
+PetscErrorCode SPBCRigidKernel(PetscInt cdim, PetscReal G[][SP_RIGID_MAX], const PetscReal centre[3], PetscReal size, PetscReal floor, PetscBool *trans, PetscReal t[3], PetscInt *nfree, PetscReal axis[3], PetscReal point[3])
 {
   const PetscInt m = cdim * (cdim + 1) / 2;
   PetscInt       kern[SP_RIGID_MAX], nk = 0;
@@ -186,12 +189,12 @@ PetscErrorCode SPBCRigidKernel(PetscInt cdim, PetscReal G[][SP_RIGID_MAX], const
 
   PetscFunctionBeginUser;
   *nfree = 0;
-  FreeTranslation(cdim, G, trans, t);
+  FreeTranslation(cdim, G, floor, trans, t);
   if (*trans) PetscFunctionReturn(PETSC_SUCCESS);
   Eigen(m, G, w, v);
   for (PetscInt i = 0; i < m; ++i) wmax = PetscMax(wmax, w[i]);
   for (PetscInt i = 0; i < m; ++i)
-    if (w[i] <= 1e-10 * wmax) kern[nk++] = i;
+    if (w[i] <= PetscMax(1e-10 * wmax, floor)) kern[nk++] = i;
   if (!nk) PetscFunctionReturn(PETSC_SUCCESS);
   ShownMode(cdim, v, kern, nk, mode);
   axis[0] = axis[1] = 0.0, axis[2] = 1.0;
@@ -228,6 +231,6 @@ PetscErrorCode SPBCFreeRotation(DM dm, SPContact c, PetscInt *nfree, PetscReal a
   PetscCall(DMGetBoundingBox(dm, lo, hi));
   for (PetscInt d = 0; d < cdim; ++d) centre[0][d] = 0.5 * (lo[d] + hi[d]), size[0] = PetscMax(size[0], hi[d] - lo[d]);
   PetscCall(SPBCRigidSupports(dm, c, PETSC_TRUE, NULL, 1, centre, size, G));
-  PetscCall(SPBCRigidKernel(cdim, G[0], centre[0], size[0], &trans, t, nfree, axis, point));
+  PetscCall(SPBCRigidKernel(cdim, G[0], centre[0], size[0], 0.0, &trans, t, nfree, axis, point));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

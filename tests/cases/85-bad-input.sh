@@ -263,6 +263,11 @@ test_bad_input_free_body_ranks() {
     assert_eq "body held in x only refused on $np rank(s)" "$(grep -c "^spcontact: error: nothing holds the body in the box (0, 0.5)..(1, 1) (15 cells): its supports (Dirichlet components) leave it free to move along (0, 1), and no contact pair names its facets" "$CASE_DIR/p$np.txt")" 1 || rc=1
     spc "$CASE_DIR/d$np.txt" $np -options_file input/hertz2d_twobody.opts -bc_0_values 6 -contact_pair_0_slave_values 5 -output_dir "$CASE_DIR" -output_name d$np
     assert_eq "disc held by nothing refused on $np rank(s)" "$(grep -c "^spcontact: error: nothing holds the body in the box (0, 0)..(1, 1) (9580 cells): no Dirichlet condition acts on it and there is no obstacle, and no contact pair names its facets" "$CASE_DIR/d$np.txt")" 1 || rc=1
+    # B6's disc without its symmetry condition, held only through the frictionless pair: its
+    # normals point through its centre, so it turns about it with the block held still (it stalled
+    # into every cut-back); the same line on every rank count, and with the two-pass mirror
+    spc "$CASE_DIR/t$np.txt" $np -options_file input/hertz2d_twobody.opts -bc_0_values 6 -output_dir "$CASE_DIR" -output_name t$np
+    assert_eq "disc free to turn on its frictionless pair refused on $np rank(s)" "$(grep -c "^spcontact: error: nothing holds the body in the box (0, 0)..(1, 1) (9580 cells) against the bodies it touches: its Dirichlet components and its contact pairs, which push along their normals only (frictionless), leave it free, or all but free, to turn about the point (-0.000966491, 1.00257) even with those bodies held still" "$CASE_DIR/t$np.txt")" 1 || rc=1
     spc "$CASE_DIR/n$np.txt" $np -mesh_file build/mesh/patch_4_5.msh -bc_0_type dirichlet -bc_0_values 1 -bc_0_components 0,1 -bc_1_type pressure -bc_1_values 4 -bc_1_value 0.01 -output_dir "$CASE_DIR" -output_name n$np
     assert_eq "free block without contact refused on $np rank(s)" "$(grep -c "^spcontact: error: nothing holds the body in the box (0, 0.5)..(1, 1) (15 cells): no Dirichlet condition acts on it and there is no obstacle, and there are no contact pairs" "$CASE_DIR/n$np.txt")" 1 || rc=1
     # its rollers' components swapped (u_y on its left edge, u_x on its bottom): a rotation; and
@@ -294,6 +299,10 @@ test_bad_input_free_body_ranks() {
   # shellcheck disable=SC2086
   spc "$CASE_DIR/g.txt" 2 $three -contact_pair_1_slave_values 11 -contact_pair_1_master_values 3 -output_dir "$CASE_DIR" -output_name g -output_fields false || rc=1
   assert_eq "three blocks linked by two pairs: runs" "$(sval "$CASE_DIR/g.txt" converged)" yes || rc=1
+  spc "$CASE_DIR/t2p.txt" 2 -options_file input/hertz2d_twobody.opts -bc_0_values 6 -contact_two_pass -output_dir "$CASE_DIR" -output_name t2p
+  assert_eq "the same disc with -contact_two_pass refused (2 ranks)" "$(grep -c "^spcontact: error: nothing holds the body in the box (0, 0)..(1, 1) (9580 cells) against the bodies it touches" "$CASE_DIR/t2p.txt")" 1 || rc=1
+  spc "$CASE_DIR/b6.txt" 2 -options_file input/hertz2d_twobody.opts -contact_two_pass -output_dir "$CASE_DIR" -output_name b6 -output_fields false || rc=1
+  assert_eq "B6 two-pass with its symmetry conditions: runs" "$(sval "$CASE_DIR/b6.txt" converged)" yes || rc=1
   spc "$CASE_DIR/ok.txt" 2 -mesh_file build/mesh/patch_4_5.msh -bc_0_type dirichlet -bc_0_values 1,4 -bc_0_components 0,1 -bc_1_type pressure -bc_1_values 6 -bc_1_value 0.01 -output_dir "$CASE_DIR" -output_name ok -output_fields false || rc=1
   assert_eq "both blocks held, no contact: runs" "$(sval "$CASE_DIR/ok.txt" converged)" yes || rc=1
   return $rc
