@@ -299,6 +299,16 @@ test_bad_input_free_body_ranks() {
   # shellcheck disable=SC2086
   spc "$CASE_DIR/g.txt" 2 $three -contact_pair_1_slave_values 11 -contact_pair_1_master_values 3 -output_dir "$CASE_DIR" -output_name g -output_fields false || rc=1
   assert_eq "three blocks linked by two pairs: runs" "$(sval "$CASE_DIR/g.txt" converged)" yes || rc=1
+  # 3D: two stacked tetrahedral boxes (gmsh, OpenCASCADE), the lower one clamped, the upper one held
+  # in y on its y = 0 face, a frictionless pair between them: the upper box slides along x
+  printf '%s\n' 'SetFactory("OpenCASCADE");' 'Box(1) = {0, 0, 0, 1, 1, 0.5};' 'Box(2) = {0, 0, 0.5, 1, 1, 0.5};' 'Mesh.MeshSizeMax = 0.25;' \
+    'Physical Surface(1) = {5};' 'Physical Surface(2) = {6};' 'Physical Surface(3) = {11};' 'Physical Surface(4) = {12};' \
+    'Physical Surface(7) = {9};' 'Physical Volume(10) = {1};' 'Physical Volume(20) = {2};' >"$CASE_DIR/boxes.geo"
+  gmsh -v 2 -3 -format msh22 -o "$CASE_DIR/boxes.msh" "$CASE_DIR/boxes.geo" >/dev/null || { echo "gmsh failed on boxes.geo"; return 1; }
+  for np in 1 2 3; do
+    spc "$CASE_DIR/x$np.txt" $np -mesh_file "$CASE_DIR/boxes.msh" -bc_0_type dirichlet -bc_0_values 1 -bc_1_type dirichlet -bc_1_values 7 -bc_1_components 1 -bc_2_type pressure -bc_2_values 4 -bc_2_value 0.01 -contact_pair_0_slave_values 3 -contact_pair_0_master_values 2 -output_dir "$CASE_DIR" -output_name x$np
+    assert_eq "3D box free to slide on its frictionless pair refused on $np rank(s)" "$(grep -cE "^spcontact: error: nothing holds the body in the box \(0, 0, 0.5\)..\(1, 1, 1\) \([0-9]+ cells\) against the bodies it touches: .* to move along \(1, 0, 0\) even with those bodies held still" "$CASE_DIR/x$np.txt")" 1 || rc=1
+  done
   spc "$CASE_DIR/t2p.txt" 2 -options_file input/hertz2d_twobody.opts -bc_0_values 6 -contact_two_pass -output_dir "$CASE_DIR" -output_name t2p
   assert_eq "the same disc with -contact_two_pass refused (2 ranks)" "$(grep -c "^spcontact: error: nothing holds the body in the box (0, 0)..(1, 1) (9580 cells) against the bodies it touches" "$CASE_DIR/t2p.txt")" 1 || rc=1
   spc "$CASE_DIR/b6.txt" 2 -options_file input/hertz2d_twobody.opts -contact_two_pass -output_dir "$CASE_DIR" -output_name b6 -output_fields false || rc=1
