@@ -8,7 +8,9 @@
    motion by its own supports: the Dirichlet components at its vertices and, where their reaction
    directions are known (frictionless planes), the obstacles at its slave points (bc-rotation.c's
    rows; a group an obstacle can touch counts as held otherwise). The group reported is the first
-   by its bounding box's lower corner, so the line is the same on any rank count. */
+   by its bounding box's lower corner, so the line is the same on any rank count. A pair holds
+   only along its normals, so each body in a pair is then checked with the bodies it touches held
+   still (CheckRelative): a disc on a frictionless pair, held by nothing else, turns. */
 #include <spcontact-impl.h>
 
 static PetscInt Find(PetscInt parent[], PetscInt i)
@@ -208,6 +210,16 @@ static PetscErrorCode GroupInfo(DM dm, SPContact c, const PetscInt vg[], const P
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Each group's centre and size (its box's largest extent; 1 if flat): the rows' scaled positions */
+static void BoxScales(PetscInt ng, const SPGroupInfo info[], PetscReal centre[][3], PetscReal size[])
+{
+  for (PetscInt g = 0; g < ng; ++g) {
+    size[g] = 0.0;
+    for (PetscInt d = 0; d < 3; ++d) centre[g][d] = 0.5 * (info[g].lo[d] + info[g].hi[d]), size[g] = PetscMax(size[g], info[g].hi[d] - info[g].lo[d]);
+    if (size[g] <= 0.0) size[g] = 1.0;
+  }
+}
+
 /* Whether group a comes before group b: by the lower corner of its box, then its upper corner */
 static PetscBool Before(PetscInt dim, const SPGroupInfo *a, const SPGroupInfo *b)
 {
@@ -275,14 +287,14 @@ static PetscErrorCode Refuse(DM dm, SPContact c, PetscInt dim, const SPGroupInfo
 /* Collective: pair k's master body mb[k], the one body its master facets lie on (-1: several) */
 static PetscErrorCode MasterBodies(DM dm, SPContact c, const PetscInt vb[], PetscInt mb[])
 {
-  PetscInt vStart, vEnd, lo[2 * SP_MAX_PAIRS * 2], all[2 * SP_MAX_PAIRS * 2];
+  PetscInt vStart, vEnd, lo[2 * 2 * SP_MAX_PAIRS], all[2 * 2 * SP_MAX_PAIRS]; /* per pair (mirrors included): min body, -(max body) */
 
   PetscFunctionBeginUser;
   PetscCall(DMPlexGetDepthStratum(dm, 0, &vStart, &vEnd));
   for (PetscInt k = 0; k < c->npair; ++k) {
     const SPPair *pr = &c->pair[k];
     PetscInt      n, *facets, vs[27], nvs;
-    lo[2 * k] = lo[2 * k + 1] = PETSC_MAX_INT; /* min body, -(max body) */
+    lo[2 * k] = lo[2 * k + 1] = PETSC_MAX_INT;
     PetscCall(SPMeshGetLabelFacets(dm, pr->label, pr->nmaster, pr->master, &n, &facets));
     for (PetscInt f = 0; f < n; ++f) {
       PetscCall(ClosureVertices(dm, facets[f], vStart, vEnd, vs, &nvs));
@@ -361,11 +373,7 @@ static PetscErrorCode CheckRelative(DM dm, SPContact c, PetscInt dim, const Pets
   PetscCall(PetscCalloc2(nb, &loc, nb, &P));
   for (PetscInt b = 0; b < nb; ++b) id[b] = b;
   PetscCall(GroupInfo(dm, c, vb, id, nb, nb, info));
-  for (PetscInt b = 0; b < nb; ++b) {
-    size[b] = 0.0;
-    for (PetscInt d = 0; d < 3; ++d) centre[b][d] = 0.5 * (info[b].lo[d] + info[b].hi[d]), size[b] = PetscMax(size[b], info[b].hi[d] - info[b].lo[d]);
-    if (size[b] <= 0.0) size[b] = 1.0;
-  }
+  BoxScales(nb, info, centre, size);
   PetscCall(MasterBodies(dm, c, vb, mb));
   PetscCall(SPBCRigidSupports(dm, c, planes, vb, nb, centre, size, G));
   AddPairRows(c, dim, vStart, vb, mb, centre, size, loc);
@@ -424,11 +432,7 @@ PetscErrorCode SPBCCheckBodies(DM dm, SPContact c)
   }
   PetscCall(PetscMalloc4(ng, &info, ng, &centre, ng, &size, ng, &G));
   PetscCall(GroupInfo(dm, c, vg, bg, nb, ng, info));
-  for (PetscInt g = 0; g < ng; ++g) {
-    size[g] = 0.0;
-    for (PetscInt d = 0; d < 3; ++d) centre[g][d] = 0.5 * (info[g].lo[d] + info[g].hi[d]), size[g] = PetscMax(size[g], info[g].hi[d] - info[g].lo[d]);
-    if (size[g] <= 0.0) size[g] = 1.0;
-  }
+  BoxScales(ng, info, centre, size);
   PetscCall(SPBCRigidSupports(dm, c, planes, vg, ng, centre, size, G));
   for (PetscInt g = 0; g < ng; ++g) {
     PetscReal Gc[SP_RIGID_MAX][SP_RIGID_MAX], t[3], axis[3], point[3];
