@@ -37,15 +37,16 @@ static PetscBool NodeRange(FILE *fp, int major, double r[6])
   return PETSC_TRUE;
 }
 
-/* The last element type of an ASCII gmsh file above first order (tri6, quad9, tet10, ...: gmsh
-   types other than 1-7 and 15; gmsh writes the cells last), 0 if none or not known. PETSc's reader makes such a mesh's
-   coordinates a higher-order field, and the facet geometry failed on it with "Edge has 0
-   coordinates != 4"; spcontact reads the corner nodes instead (ReadMesh). */
+/* Whether a gmsh element type is first order (types 1-7 and 15) */
 static PetscBool FirstOrder(int type)
 {
   return (type >= 1 && type <= 7) || type == 15 ? PETSC_TRUE : PETSC_FALSE;
 }
 
+/* The last element type of an ASCII gmsh file above first order (tri6, quad9, tet10, ...; gmsh
+   writes the cells last), 0 if none or not known. PETSc's reader makes such a mesh's coordinates
+   a higher-order field, and the facet geometry failed on it with "Edge has 0 coordinates != 4";
+   spcontact reads the corner nodes instead (CornerNodesOnly). */
 static int HighOrderType(FILE *fp, int major)
 {
   char line[4096];
@@ -71,8 +72,8 @@ static int HighOrderType(FILE *fp, int major)
 
 /* A gmsh file must exist and start with $MeshFormat; checked on rank 0 before PETSc's reader
    runs, so a bad file is a clear, collective error instead of a parse failure deep inside.
-   range: its nodes' coordinate range (NodeRange; min > max if not known); *high: its first element
-   type above first order (0: none) */
+   range: its nodes' coordinate range (NodeRange; min > max if not known); *high: its last element
+   type above first order (HighOrderType; 0: none) */
 static PetscErrorCode CheckMeshFile(MPI_Comm comm, const char file[], double range[6], int *high)
 {
   PetscMPIInt rank;
@@ -142,9 +143,7 @@ static PetscErrorCode TryRead(MPI_Comm comm, const char file[], PetscBool interp
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Second-order gmsh elements are read by their corner nodes, as first-order cells: spcontact's
-   geometry (facet normals and areas, contact points, the fast operator) is first order, and
-   PETSc's higher-order coordinate field stopped the facet geometry with a PETSc message */
+/* A higher-order gmsh type's name for the warning */
 static const char *TypeName(int type)
 {
   switch (type) {
@@ -159,6 +158,9 @@ static const char *TypeName(int type)
   }
 }
 
+/* Higher-order gmsh elements are read by their corner nodes, as first-order cells: spcontact's
+   geometry (facet normals and areas, contact points, the fast operator) is first order, and
+   PETSc's higher-order coordinate field stopped the facet geometry with a PETSc message */
 static PetscErrorCode CornerNodesOnly(MPI_Comm comm, const char file[], int high)
 {
   PetscBool hi = PETSC_FALSE, set;
