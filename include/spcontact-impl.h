@@ -116,6 +116,7 @@ PETSC_EXTERN void           SPBCRigidAddRow(PetscInt, const PetscReal[3], const 
 PETSC_EXTERN PetscErrorCode SPBCRigidSupports(DM, SPContact, PetscBool, const PetscInt[], PetscInt, const PetscReal[][3], const PetscReal[], PetscReal[][SP_RIGID_MAX][SP_RIGID_MAX]); /* bc-rotation.c: the supports' rows per group of vertices */
 PETSC_EXTERN PetscErrorCode SPBCRigidKernel(PetscInt, PetscReal[][SP_RIGID_MAX], const PetscReal[3], PetscReal, PetscReal, PetscBool *, PetscReal[3], PetscInt *, PetscReal[3], PetscReal[3]); /* bc-rotation.c: the rigid modes they leave free */
 PETSC_EXTERN PetscErrorCode SPBCCheckBodies(DM, SPContact); /* bc-bodies.c: a body (or bodies linked by pairs) that nothing holds, refused */
+PETSC_EXTERN PetscErrorCode SPBCCheckBodiesInPairs(DM, SPContact); /* bc-bodies.c: a body in a pair held with the others still */
 PETSC_EXTERN PetscReal      SPBCAmplitude(const SPBC *, PetscReal); /* a condition's load curve at a load factor */
 PETSC_EXTERN void           SPBCSetLoad(PetscInt, const SPBC[], PetscReal, PetscScalar[]);
 PETSC_EXTERN PetscBool      SPBCProportional(PetscInt, const SPBC[], const PetscReal[3], PetscReal);

@@ -65,6 +65,7 @@ static PetscErrorCode CheckCombination(SPApp a)
   if (!help) PetscCall(SPBCCheckBodies(a->dm, a->contact)); /* each body (or group linked by pairs) held on its own */
   if (!help) PetscCall(SPBCCheckAbsorbed(a->dm, a->problem)); /* a load on held dofs only */
   if (!help) PetscCall(SPBCCheckBalance(a->dm, a->problem, a->contact)); /* -help alone sets up a box with no condition */
+  if (!help) PetscCall(SPBCCheckBodiesInPairs(a->dm, a->contact)); /* each body in a pair, the others held still */
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -240,6 +240,14 @@ static void Format(PetscInt dim, const PetscReal v[3], char s[], size_t len)
   (void)PetscSNPrintf(s, len, dim == 2 ? "(%.6g, %.6g)" : "(%.6g, %.6g, %.6g)", (double)v[0], (double)v[1], (double)v[2]);
 }
 
+/* Whether the obstacles' reactions are known before the solve: frictionless planes only */
+static PetscBool KnownReactions(SPContact c)
+{
+  for (PetscInt k = 0; c && c->enabled && k < c->nob; ++k)
+    if (c->ob[k].type != SP_OBSTACLE_PLANE) return PETSC_FALSE;
+  return c && c->enabled && c->friction ? PETSC_FALSE : PETSC_TRUE;
+}
+
 /* The one line for free group info (G: its rows; nfree: groups found free) */
 static PetscErrorCode Refuse(DM dm, SPContact c, PetscInt dim, const SPGroupInfo *info, PetscReal G[][SP_RIGID_MAX], PetscInt nfree)
 {
@@ -400,7 +408,7 @@ static PetscErrorCode CheckRelative(DM dm, SPContact c, PetscInt dim, const Pets
 PetscErrorCode SPBCCheckBodies(DM dm, SPContact c)
 {
   PetscInt     vStart, vEnd, nv, dim, nb = 0, ng = 0, *vb, *vg, *parent, *bg, nfree = 0, first = -1;
-  PetscBool    planes = PETSC_TRUE;
+  PetscBool    planes = KnownReactions(c);
   SPGroupInfo *info;
   PetscReal(*centre)[3], *size, (*G)[SP_RIGID_MAX][SP_RIGID_MAX];
 
@@ -421,11 +429,7 @@ PetscErrorCode SPBCCheckBodies(DM dm, SPContact c)
   for (PetscInt i = 0; i < nb; ++i) bg[i] = Find(parent, i) == i ? ng++ : -1;
   for (PetscInt i = 0; i < nb; ++i) bg[i] = bg[Find(parent, i)];
   for (PetscInt v = 0; v < nv; ++v) vg[v] = vb[v] >= 0 ? bg[vb[v]] : -1;
-  for (PetscInt k = 0; c && c->enabled && k < c->nob; ++k) /* reactions known only for frictionless planes */
-    if (c->ob[k].type != SP_OBSTACLE_PLANE) planes = PETSC_FALSE;
-  if (c && c->enabled && c->friction) planes = PETSC_FALSE;
   if (ng < 2) { /* one group: the whole assembly, which bc-balance.c checks with the loads */
-    if (Pairs(c)) PetscCall(CheckRelative(dm, c, dim, vb, nb, planes));
     PetscCall(PetscFree2(parent, bg));
     PetscCall(PetscFree2(vb, vg));
     PetscFunctionReturn(PETSC_SUCCESS);
@@ -446,9 +450,27 @@ PetscErrorCode SPBCCheckBodies(DM dm, SPContact c)
     if (first < 0 || Before(dim, &info[g], &info[first])) first = g;
   }
   if (nfree) PetscCall(Refuse(dm, c, dim, &info[first], G[first], nfree));
-  if (Pairs(c)) PetscCall(CheckRelative(dm, c, dim, vb, nb, planes));
   PetscCall(PetscFree4(info, centre, size, G));
   PetscCall(PetscFree2(parent, bg));
   PetscCall(PetscFree2(vb, vg));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Collective, after bc-balance.c's whole-assembly check (whose lines are the more general ones):
+   one line if a body in a contact pair is not held with the bodies it touches held still */
+PetscErrorCode SPBCCheckBodiesInPairs(DM dm, SPContact c)
+{
+  PetscInt vStart, vEnd, nv, dim, nb = 0, *vb;
+
+  PetscFunctionBeginUser;
+  if (!Pairs(c)) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(DMGetCoordinateDim(dm, &dim));
+  PetscCall(DMPlexGetDepthStratum(dm, 0, &vStart, &vEnd));
+  nv = vEnd - vStart;
+  PetscCall(PetscMalloc1(nv + 1, &vb));
+  PetscCall(VertexLabels(dm, vb));
+  PetscCall(NumberBodies(dm, nv, vb, &nb));
+  if (nb >= 2) PetscCall(CheckRelative(dm, c, dim, vb, nb, KnownReactions(c)));
+  PetscCall(PetscFree(vb));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
