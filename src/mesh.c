@@ -161,19 +161,16 @@ static const char *TypeName(int type)
 /* Higher-order gmsh elements are read by their corner nodes, as first-order cells: spcontact's
    geometry (facet normals and areas, contact points, the fast operator) is first order, and
    PETSc's higher-order coordinate field stopped the facet geometry with a PETSc message */
-static PetscErrorCode CornerNodesOnly(MPI_Comm comm, const char file[], int high)
+static PetscErrorCode CornerNodesOnly(MPI_Comm comm, const char file[], int high, PetscBool hi)
 {
-  PetscBool hi = PETSC_FALSE, set;
-
   PetscFunctionBeginUser;
-  PetscCall(PetscOptionsGetBool(NULL, NULL, "-dm_plex_gmsh_highorder", &hi, &set));
-  PetscCheck(!(set && hi), comm, PETSC_ERR_USER_INPUT, "-dm_plex_gmsh_highorder true: spcontact's geometry is first order (P1/Q1 cells; contact points at vertices); leave the option out, and a second-order mesh is read by its corner nodes");
+  PetscCheck(!hi, comm, PETSC_ERR_USER_INPUT, "-dm_plex_gmsh_highorder true: spcontact's geometry is first order (P1/Q1 cells; contact points at vertices); leave the option out, and a second-order mesh is read by its corner nodes");
   PetscCall(SPOptionsSetDefault("-dm_plex_gmsh_highorder", "false"));
   if (high) PetscCall(PetscFPrintf(comm, PETSC_STDERR, "spcontact: warning: -mesh_file %s holds higher-order elements (%s): read by their corner nodes as first-order cells, so curved edges become straight and the other nodes are not used; mesh with Mesh.ElementOrder = 1 to silence this, and refine for the geometry\n", file, TypeName(high)));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode ReadMesh(MPI_Comm comm, const char file[], DM *dm)
+static PetscErrorCode ReadMesh(MPI_Comm comm, const char file[], PetscBool highOrder, DM *dm)
 {
   PetscMPIInt size, rank;
   int         bad = 0, high;
@@ -181,7 +178,7 @@ static PetscErrorCode ReadMesh(MPI_Comm comm, const char file[], DM *dm)
 
   PetscFunctionBeginUser;
   PetscCall(CheckMeshFile(comm, file, range, &high));
-  PetscCall(CornerNodesOnly(comm, file, high));
+  PetscCall(CornerNodesOnly(comm, file, high, highOrder));
   PetscCallMPI(MPI_Comm_size(comm, &size));
   if (size == 1) { /* one process: nobody can be left waiting, so one read (B2: 17 ms saved) */
     PetscCall(TryRead(comm, file, PETSC_TRUE, dm, &bad));
@@ -548,17 +545,19 @@ static PetscErrorCode MeshFileAlias(MPI_Comm comm, char file[], size_t len)
 
 PetscErrorCode SPMeshCreate(MPI_Comm comm, DM *dm)
 {
-  char file[PETSC_MAX_PATH_LEN] = "", partitioner[64] = "metis";
+  char      file[PETSC_MAX_PATH_LEN] = "", partitioner[64] = "metis";
+  PetscBool highOrder = PETSC_FALSE;
 
   PetscFunctionBeginUser;
   PetscOptionsBegin(comm, NULL, "Mesh options", "spcontact");
   PetscCall(PetscOptionsString("-mesh_file", "gmsh .msh file (PETSc's -dm_plex_filename is taken as this); without it a PETSc box mesh is built from -dm_plex_box_* options", "SPMeshCreate", file, file, sizeof(file), NULL));
   PetscCall(PetscOptionsString("-mesh_partitioner", "Partitioner: metis (METIS 5 k-way, default), ptscotch, simple", "SPMeshCreate", partitioner, partitioner, sizeof(partitioner), NULL));
+  PetscCall(PetscOptionsBool("-dm_plex_gmsh_highorder", "PETSc's higher-order gmsh coordinates: refused if true (spcontact's geometry is first order; a higher-order mesh is read by its corner nodes, with a warning)", "SPMeshCreate", highOrder, &highOrder, NULL));
   PetscOptionsEnd();
   PetscCall(MeshFileAlias(comm, file, sizeof(file)));
   for (char *c = partitioner; *c; ++c) *c = (char)tolower((unsigned char)*c); /* any case, as PETSc's lists */
   if (file[0]) {
-    PetscCall(ReadMesh(comm, file, dm));
+    PetscCall(ReadMesh(comm, file, highOrder, dm));
     PetscCall(CheckDimension(comm, file, *dm));
     PetscCall(SPMeshCheckSize(comm, *dm));
   } else {

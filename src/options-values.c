@@ -27,7 +27,7 @@ static const char *const PetscFamilies[] = {"-ksp_", "-snes_", "-pc_", "-mg_", "
 
 static const char *const NumericTails[] = {"_rtol", "_atol", "_stol", "_dtol", "_divtol", "_max_it", "_max_funcs", "_max_fail", "_max_linear_solve_fail", "_restart", "_threshold", "_eq_limit", "_nsmooths", "_square_graph", "_lag_preconditioner", "_lag_jacobian", "_levels", "_refine", "_faces", "_lower", "_upper", "_dim", "_esteig", "_damping"};
 
-static const char *const Flags[] = {"-contact_branch_hold", "-contact_friction_stick_hold", "-contact_monitor", "-contact_pair_exchange_all", "-contact_safeguard", "-contact_shift_predict", "-contact_shift_settled", "-contact_two_pass", "_follower", "-output_fields", "-quiet", "-solver_check_fast", "-solver_direct_cholesky", "-solver_fast_bulk", "-solver_fast_prealloc", "-solver_gamg_shared_graph", "-solver_inexact", "-solver_inexact_inner", "-solver_inexact_measured", "-solver_inexact_refine", "-solver_linear_reuse", "-solver_target_floor"};
+static const char *const Flags[] = {"-contact_branch_hold", "-contact_friction_stick_hold", "-contact_monitor", "-contact_pair_exchange_all", "-contact_safeguard", "-contact_shift_predict", "-contact_shift_settled", "-contact_two_pass", "-dm_plex_gmsh_highorder", "_follower", "-output_fields", "-quiet", "-solver_check_fast", "-solver_direct_cholesky", "-solver_fast_bulk", "-solver_fast_prealloc", "-solver_gamg_shared_graph", "-solver_inexact", "-solver_inexact_inner", "-solver_inexact_measured", "-solver_inexact_refine", "-solver_linear_reuse", "-solver_target_floor"};
 
 /* name ends with one of tails[0..n) (and is longer) */
 static PetscBool HasTail(const char name[], const char *const tails[], size_t n)
